@@ -1,0 +1,57 @@
+# frozen_string_literal: true
+
+require_relative "../error"
+
+module Relspec
+  module CLI
+    # The one place where failures become messages for people: user errors
+    # print their diagnostics, bugs print one line asking for --debug. The
+    # core only raises typed errors and never prints.
+    module FriendlyErrors
+      EXIT_USER_ERROR = 1
+      EXIT_BUG = 70
+      EXIT_INTERRUPTED = 130
+
+      def self.wrap(stderr:, debug:)
+        yield
+        0
+      rescue InvalidInput => e
+        stderr.puts(e.diagnostics.map(&:to_s))
+        stderr.puts(Summary.of(e.diagnostics))
+        EXIT_USER_ERROR
+      rescue Error => e
+        raise if debug
+
+        stderr.puts("relspec: error: #{e.message}")
+        EXIT_USER_ERROR
+      rescue Interrupt
+        stderr.puts("relspec: interrupted")
+        EXIT_INTERRUPTED
+      rescue Errno::EPIPE
+        0
+      rescue StandardError => e
+        raise if debug
+
+        stderr.puts("relspec: internal error: #{e.class}: #{e.message}")
+        stderr.puts("This is a bug in relspec; run again with --debug to see where it happened.")
+        EXIT_BUG
+      end
+    end
+
+    # "2 errors, 1 warning in specs/x.yml" lines closing a report.
+    module Summary
+      def self.of(diagnostics)
+        errors = diagnostics.count(&:error?)
+        warnings = diagnostics.size - errors
+        files = diagnostics.map { |d| d.location&.file }.compact.uniq.size
+        parts = [count(errors, "error")]
+        parts << count(warnings, "warning") if warnings.positive?
+        "#{parts.join(', ')} in #{count(files, 'file')}"
+      end
+
+      def self.count(number, noun)
+        "#{number} #{noun}#{'s' unless number == 1}"
+      end
+    end
+  end
+end

@@ -1,0 +1,61 @@
+# frozen_string_literal: true
+
+require "thor"
+require_relative "../version"
+require_relative "validate_command"
+require_relative "show_command"
+
+module Relspec
+  module CLI
+    # The command line (DESIGN §7). Each command is a small class; this file
+    # only declares options and hands them over.
+    class Main < Thor
+      package_name "relspec"
+
+      def self.exit_on_failure?
+        true
+      end
+
+      class_option :debug, type: :boolean, default: false, desc: "Show backtraces of internal errors"
+      class_option :quiet, type: :boolean, default: false, desc: "No progress output"
+
+      map %w[--version -v] => :version
+
+      desc "version", "Print relspec's version"
+      def version
+        puts "relspec #{VERSION}"
+      end
+
+      desc "validate [SPEC...]", "Check release specs and their ancestors (default: every spec in specs/)"
+      long_desc <<~TEXT
+        Reads each spec and all of its ancestors and reports every problem found,
+        with file:line:column, the rule that failed and a hint. Works offline and
+        writes nothing. Exits 1 if any error was found; warnings alone exit 0.
+      TEXT
+      option :format, enum: %w[text json], default: "text", desc: "Output format"
+      def validate(*paths)
+        finish ValidateCommand.new(paths: paths, format: options[:format], out: $stdout, err: $stderr).call
+      end
+
+      desc "show SPEC", "Print the effective spec of a release after inheritance"
+      long_desc <<~TEXT
+        Prints the release's own values merged with what it inherits from its
+        parents (see docs/spec-reference.md). With --origins, each value is
+        annotated with the file and line it comes from ("default" for built-in
+        defaults).
+      TEXT
+      option :origins, type: :boolean, default: false, desc: "Annotate each value with where it was written"
+      option :format, enum: %w[yaml json], default: "yaml", desc: "Output format"
+      def show(path)
+        finish ShowCommand.new(path: path, format: options[:format], origins: options[:origins],
+                               out: $stdout, err: $stderr).call
+      end
+
+      private
+
+      def finish(status)
+        exit(status) unless status.zero?
+      end
+    end
+  end
+end

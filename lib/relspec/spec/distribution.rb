@@ -1,0 +1,48 @@
+# frozen_string_literal: true
+
+module Relspec
+  module Spec
+    # A target distribution as autoproj's osdeps name it: a type (ubuntu
+    # inherits Debian's package names, so it is keyed "ubuntu,debian") and the
+    # labels autoproj matches against the running system.
+    Distribution = Struct.new(:codename, :type, :labels, keyword_init: true) do
+      def self.define(codename, type, labels)
+        new(codename: codename, type: type, labels: labels.map(&:to_s).freeze).freeze
+      end
+
+      def osdeps_type_key
+        type == "ubuntu" ? "ubuntu,debian" : "debian"
+      end
+
+      def osdeps_labels_key
+        labels.join(",")
+      end
+    end
+
+    # The distributions Rock releases have targeted; specs may add or override
+    # entries with `distributions:`.
+    module Distributions
+      TYPES = %w[ubuntu debian].freeze
+
+      BUILTIN = [
+        Distribution.define("xenial", "ubuntu", %w[16.04 xenial xerus default]),
+        Distribution.define("bionic", "ubuntu", %w[18.04 bionic beaver default]),
+        Distribution.define("focal", "ubuntu", %w[20.04 focal fossa default]),
+        Distribution.define("jammy", "ubuntu", %w[22.04 jammy jellyfish default]),
+        Distribution.define("noble", "ubuntu", %w[24.04 noble numbat default]),
+        Distribution.define("stretch", "debian", %w[9 stretch default]),
+        Distribution.define("buster", "debian", %w[10 buster default]),
+        Distribution.define("bullseye", "debian", %w[11 bullseye default]),
+        Distribution.define("bookworm", "debian", %w[12 bookworm default])
+      ].to_h { |d| [d.codename, d] }.freeze
+
+      # Built-ins overlaid with a spec's own definitions ({codename => {"type", "labels"}}).
+      def self.with_overrides(definitions)
+        own = (definitions || {}).to_h do |codename, definition|
+          [codename, Distribution.define(codename, definition["type"], definition["labels"])]
+        end
+        BUILTIN.merge(own).freeze
+      end
+    end
+  end
+end

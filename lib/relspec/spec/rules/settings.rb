@@ -1,0 +1,93 @@
+# frozen_string_literal: true
+
+require_relative "../names"
+require_relative "../distribution"
+require_relative "../../diagnostic"
+
+module Relspec
+  module Spec
+    module Rules
+      # The scalar settings and user-named entries that end up in Debian
+      # package names, paths and control files.
+      module Settings
+        def self.call(file)
+          [
+            install_prefix(file), package_prefix(file), maintainer(file),
+            *gems(file), *selection(file), *distributions(file)
+          ].compact
+        end
+
+        def self.install_prefix(file)
+          prefix = file.usable("install_prefix")
+          return nil if !prefix.is_a?(String) || (prefix.start_with?("/") && !prefix.split("/").include?(".."))
+
+          Diagnostic.error("install-prefix", "install_prefix #{prefix.inspect} must be an absolute path without ..",
+                           location: file.location(["install_prefix"]), hint: "e.g. /opt/rock")
+        end
+
+        def self.package_prefix(file)
+          prefix = file.usable("package_prefix")
+          prefix.is_a?(String) ? debian_prefix(file, ["package_prefix"], prefix) : nil
+        end
+
+        def self.debian_prefix(file, path, prefix)
+          return nil if Names::DEBIAN_PREFIX.match?(prefix)
+
+          Diagnostic.error("package-prefix", "package prefix #{prefix.inspect} cannot start a Debian package name",
+                           location: file.location(path), hint: "use lowercase letters, digits and . + - (e.g. rock)")
+        end
+
+        def self.maintainer(file)
+          maintainer = file.usable("maintainer")
+          return nil if !maintainer.is_a?(String) || Names::MAINTAINER.match?(maintainer)
+
+          Diagnostic.error("maintainer", "maintainer #{maintainer.inspect} is not of the form \"Name <address>\"",
+                           location: file.location(["maintainer"]), hint: "e.g. Rock Packaging <rock-dev@example.org>")
+        end
+
+        def self.gems(file)
+          gems = file.usable("gems")
+          return [] unless gems.is_a?(Hash)
+
+          gems.flat_map do |name, version|
+            problems = []
+            unless Names::GEM.match?(name)
+              problems << Diagnostic.error("gem-name", "#{name.inspect} is not a gem name", location: file.key_location(["gems", name]))
+            end
+            if version.is_a?(String) && !Names::GEM_VERSION.match?(version)
+              problems << Diagnostic.error("gem-version", "version #{version.inspect} of gem #{name} is not an exact version",
+                                           location: file.location(["gems", name]),
+                                           hint: "gems are packaged at one exact version, e.g. \"4.0.2\"")
+            end
+            problems
+          end
+        end
+
+        def self.selection(file)
+          selection = file.usable("select")
+          return [] unless selection.is_a?(Array)
+
+          selection.each_with_index.filter_map do |name, index|
+            next if !name.is_a?(String) || Names.package?(name)
+
+            Diagnostic.error("package-name", "#{name.inspect} is not a package or metapackage name",
+                             location: file.location(["select", index]),
+                             hint: "autoproj names look like base/types or rock.core")
+          end
+        end
+
+        def self.distributions(file)
+          definitions = file.usable("distributions")
+          return [] unless definitions.is_a?(Hash)
+
+          definitions.filter_map do |codename, _definition|
+            next if Names::CODENAME.match?(codename)
+
+            Diagnostic.error("unknown-distribution", "invalid distribution codename #{codename.inspect}",
+                             location: file.key_location(["distributions", codename]), hint: "codenames are lowercase, e.g. trixie")
+          end
+        end
+      end
+    end
+  end
+end

@@ -1,0 +1,81 @@
+# frozen_string_literal: true
+
+require "dry/schema"
+
+module Relspec
+  module Spec
+    # The shape of a release spec, format version 1 (docs/spec-reference.md).
+    #
+    # Each schema describes one flat mapping. Mappings whose keys are chosen by
+    # the user (pins, gems, targets, external, distributions) are checked entry
+    # by entry with the entry schemas, because a schema with validate_keys would
+    # reject every package name as an unknown key.
+    module Schema
+      RELEASE = Dry::Schema.JSON do
+        config.validate_keys = true
+        required(:release).filled(:string)
+        optional(:parent)
+        optional(:description).filled(:string)
+        optional(:workspace).filled(:string)
+        optional(:select).array(:str?)
+        optional(:blacklist).array { str? | hash? }
+        optional(:pins).value(:hash)
+        optional(:gems).value(:hash)
+        optional(:targets).value(:hash)
+        optional(:repository).value(:hash)
+        optional(:install_prefix).filled(:string)
+        optional(:separate_prefixes).value(:bool)
+        optional(:package_prefix).filled(:string)
+        optional(:maintainer).filled(:string)
+        optional(:external).value(:hash)
+        optional(:distributions).value(:hash)
+      end
+
+      # Mappings checked by their own schemas (entry by entry where users choose the keys).
+      CHECKED_SEPARATELY = %w[pins gems targets external distributions repository].freeze
+
+      BLACKLIST_ENTRY = Dry::Schema.JSON do
+        config.validate_keys = true
+        required(:match).filled(:string)
+        optional(:reason).filled(:string)
+      end
+
+      PIN = Dry::Schema.JSON do
+        config.validate_keys = true
+        optional(:commit).filled(:string)
+        optional(:tag).filled(:string)
+        optional(:branch).filled(:string)
+      end
+
+      REPOSITORY = Dry::Schema.JSON do
+        config.validate_keys = true
+        optional(:path).filled(:string)
+        optional(:url).filled(:string)
+        optional(:keyring).filled(:string)
+        optional(:trusted).value(:bool)
+      end
+
+      EXTERNAL = Dry::Schema.JSON do
+        config.validate_keys = true
+        optional(:path).filled(:string)
+        optional(:url).filled(:string)
+        optional(:keyring).filled(:string)
+        optional(:trusted).value(:bool)
+        optional(:package_prefix).filled(:string)
+        optional(:install_prefix).filled(:string)
+        optional(:separate_prefixes).value(:bool)
+        optional(:targets).value(:hash)
+      end
+
+      DISTRIBUTION = Dry::Schema.JSON do
+        config.validate_keys = true
+        required(:type).filled(:string, included_in?: %w[ubuntu debian])
+        required(:labels).filled(:array).each(:str?)
+      end
+
+      def self.keys(schema)
+        schema.key_map.map(&:name)
+      end
+    end
+  end
+end

@@ -1,0 +1,177 @@
+# frozen_string_literal: true
+
+require "psych"
+require_relative "../location"
+require_relative "../diagnostic"
+
+module Relspec
+  module Yaml
+    # A YAML file read into plain Ruby data while remembering where every key
+    # and value sits, so that any later check can point at file:line:column.
+    #
+    # Psych's own loaders forget positions and silently keep the last of two
+    # duplicate keys; release specs need both, so we walk the node tree.
+    class LocatedDocument
+      # Scalars that YAML would turn into dates, symbols or other objects stay
+      # strings: a spec only ever means text, numbers, booleans or nothing.
+      PLAIN_TYPES = [String, Integer, Float, TrueClass, FalseClass, NilClass].freeze
+      ALLOWED_TAGS = [nil, "tag:yaml.org,2002:str", "tag:yaml.org,2002:int", "tag:yaml.org,2002:map",
+                      "tag:yaml.org,2002:seq", "!"].freeze
+
+      attr_reader :file, :data, :diagnostics
+
+      # +file+ is how the file is named in messages (as the user gave it).
+      def self.load(file)
+        parse(File.read(file), file: file)
+      rescue SystemCallError => e
+        failed(file, Diagnostic.error("unreadable-file", "cannot read the file: #{e.message.sub(/ @ .*/, '')}",
+                                      location: Location.file_only(file)))
+      end
+
+      def self.parse(text, file:)
+        stream = Psych.parse_stream(text, filename: file)
+        new(file, stream.children).freeze
+      rescue Psych::SyntaxError => e
+        message = [e.problem, e.context].compact.join(" ").strip
+        failed(file, Diagnostic.error("yaml-syntax", "invalid YAML: #{message}",
+                                      location: Location.at(file, e.line, e.column),
+                                      hint: "check indentation, colons and closing brackets near this point"))
+      end
+
+      def self.failed(file, diagnostic)
+        document = allocate
+        document.send(:initialize_failed, file, diagnostic)
+        document.freeze
+      end
+      private_class_method :failed
+
+      def initialize(file, documents)
+        @file = file
+        @positions = {}
+        @key_positions = {}
+        @raw = {}
+        @anchors = {}
+        @diagnostics = []
+        if documents.size > 1
+          node = documents[1]
+          @diagnostics << Diagnostic.error("yaml-syntax", "the file holds more than one YAML document",
+                                           location: at(node), hint: "keep one release per file; remove the extra `---`")
+        end
+        root = documents.first&.root
+        @data = root ? convert(root, []) : nil
+        @diagnostics.freeze
+      end
+
+      def ok?
+        @diagnostics.none?(&:error?)
+      end
+
+      # Where the value at +path+ starts; falls back to the nearest enclosing
+      # value, so a missing key is reported at the mapping that lacks it.
+      def location(path)
+        path = path.dup
+        loop do
+          found = @positions[path]
+          return found if found
+          return Location.at(file, 1, 1) if path.empty?
+
+          path.pop
+        end
+      end
+
+      # Where the key of the entry at +path+ is written (the value's location
+      # for sequence items, which have no key).
+      def key_location(path)
+        @key_positions[path] || location(path)
+      end
+
+      # The scalar exactly as written (`20.10` stays "20.10", not 20.1).
+      def raw(path)
+        @raw[path]
+      end
+
+      private
+
+      def initialize_failed(file, diagnostic)
+        @file = file
+        @positions = {}
+        @key_positions = {}
+        @raw = {}
+        @data = nil
+        @diagnostics = [diagnostic].freeze
+      end
+
+      def at(node)
+        Location.at(file, node.start_line + 1, node.start_column + 1)
+      end
+
+      def convert(node, path)
+        path = path.freeze
+        @positions[path] = at(node)
+        check_tag(node)
+        value =
+          case node
+          when Psych::Nodes::Mapping then convert_mapping(node, path)
+          when Psych::Nodes::Sequence then node.children.each_with_index.map { |child, i| convert(child, path + [i]) }.freeze
+          when Psych::Nodes::Scalar then convert_scalar(node, path)
+          when Psych::Nodes::Alias then resolve_alias(node)
+          end
+        @anchors[node.anchor] = value if node.respond_to?(:anchor) && node.anchor
+        value
+      end
+
+      def convert_mapping(node, path)
+        result = {}
+        first_seen = {}
+        node.children.each_slice(2) do |key_node, value_node|
+          key = mapping_key(key_node)
+          next unless key
+
+          key_path = (path + [key]).freeze
+          if first_seen.key?(key)
+            @diagnostics << Diagnostic.error("duplicate-key", "duplicate key \"#{key}\"", location: at(key_node),
+                                             hint: "it is already set at line #{first_seen[key]}; keep only one")
+            next
+          end
+          first_seen[key] = key_node.start_line + 1
+          @key_positions[key_path] = at(key_node)
+          result[key] = convert(value_node, key_path)
+        end
+        result.freeze
+      end
+
+      def mapping_key(node)
+        return node.value if node.is_a?(Psych::Nodes::Scalar)
+
+        @diagnostics << Diagnostic.error("wrong-type", "a key must be a plain name, not a list or mapping",
+                                         location: at(node))
+        nil
+      end
+
+      def convert_scalar(node, path)
+        @raw[path] = node.value
+        return node.value.freeze if node.quoted || node.tag == "!" || node.tag == "tag:yaml.org,2002:str"
+
+        value = Psych::ScalarScanner.new(Psych::ClassLoader::Restricted.new([], [])).tokenize(node.value)
+        PLAIN_TYPES.include?(value.class) ? value : node.value.freeze
+      rescue Psych::DisallowedClass
+        node.value.freeze
+      end
+
+      def resolve_alias(node)
+        return @anchors[node.anchor] if @anchors.key?(node.anchor)
+
+        @diagnostics << Diagnostic.error("yaml-syntax", "unknown alias *#{node.anchor}", location: at(node))
+        nil
+      end
+
+      def check_tag(node)
+        return unless node.respond_to?(:tag)
+        return if ALLOWED_TAGS.include?(node.tag)
+
+        @diagnostics << Diagnostic.error("yaml-tag", "YAML tag #{node.tag} is not allowed in a release spec",
+                                         location: at(node), hint: "write plain values; remove the tag")
+      end
+    end
+  end
+end

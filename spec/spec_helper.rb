@@ -1,0 +1,16 @@
+# frozen_string_literal: true
+
+$LOAD_PATH.unshift(File.expand_path("../lib", __dir__))
+require "relspec"
+require "tmpdir"
+require_relative "support/cli_runner"
+require_relative "support/spec_writer"
+
+RSpec.configure do |config|
+  config.expect_with(:rspec) { |c| c.syntax = :expect }
+  config.disable_monkey_patching!
+  config.order = :random
+  Kernel.srand config.seed
+  config.include CliRunner
+  config.include SpecWriter
+end
