@@ -1,0 +1,27 @@
+# frozen_string_literal: true
+
+require "spec_helper"
+
+# The README's first two commands are the newcomer's contract; CI runs the
+# second one, so the two must not drift apart.
+RSpec.describe "README" do
+  readme = File.read(File.join(CliRunner::ROOT, "README.md"))
+  commands = readme[/```sh\n(.*?)```/m, 1].lines.map(&:strip)
+
+  it "opens with the example command and the test command" do
+    expect(readme.index("```sh")).to be < readme.index("## ")
+    expect(commands.size).to eq(2)
+    expect(commands[1]).to eq("bin/setup && bundle exec rspec")
+  end
+
+  it "has CI run exactly the test command" do
+    ci = File.read(File.join(CliRunner::ROOT, ".ci", "run"))
+    expect(ci.lines.map(&:strip)).to include(commands[1])
+  end
+
+  it "names only relspec commands that exist" do
+    used = commands[0].scan(/relspec (\w+)/).flatten.uniq
+    help = relspec("help").stdout
+    used.each { |command| expect(help).to include("relspec #{command}") }
+  end
+end
