@@ -152,7 +152,8 @@ module Relspec
         @raw[path] = node.value
         return node.value.freeze if node.quoted || node.tag == "!" || node.tag == "tag:yaml.org,2002:str"
 
-        value = Psych::ScalarScanner.new(Psych::ClassLoader::Restricted.new([], [])).tokenize(node.value)
+        @scanner ||= Psych::ScalarScanner.new(Psych::ClassLoader::Restricted.new([], []))
+        value = @scanner.tokenize(node.value)
         PLAIN_TYPES.include?(value.class) ? value : node.value.freeze
       rescue Psych::DisallowedClass
         node.value.freeze
