@@ -17,6 +17,8 @@ module Relspec
       # "Name <address>", as debian/control wants it
       MAINTAINER = /\A[^<>]+ <[^<>\s]+@[^<>\s]+>\z/
 
+      RELEASE_HINT = "release names use lowercase letters, digits and . + - , starting with a letter (e.g. master-20.06)"
+
       module_function
 
       def release?(name)

@@ -55,12 +55,9 @@ module Relspec
         optional(:trusted).value(:bool)
       end
 
-      EXTERNAL = Dry::Schema.JSON do
+      # An external release is a repository plus what it tells its descendants.
+      EXTERNAL = Dry::Schema.JSON(parent: REPOSITORY) do
         config.validate_keys = true
-        optional(:path).filled(:string)
-        optional(:url).filled(:string)
-        optional(:keyring).filled(:string)
-        optional(:trusted).value(:bool)
         optional(:package_prefix).filled(:string)
         optional(:install_prefix).filled(:string)
         optional(:separate_prefixes).value(:bool)

@@ -24,7 +24,7 @@ module Relspec
             unless Names.release?(name)
               problems << Diagnostic.error("release-name", "invalid external release name #{name.inspect}",
                                            location: file.key_location(path),
-                                           hint: "release names use lowercase letters, digits and . + - , starting with a letter")
+                                           hint: Names::RELEASE_HINT)
             end
             problems.concat(Repository.check(file, path, entry, "external release #{name}"))
             problems.concat(Targets.check(file, path + ["targets"], entry["targets"]))

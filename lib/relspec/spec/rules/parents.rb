@@ -31,8 +31,7 @@ module Relspec
           if !name.is_a?(String)
             ["wrong-type", "a parent must be a release name, found #{ValueKind.of(name)}", nil]
           elsif !Names.release?(name)
-            ["release-name", "invalid parent release name #{name.inspect}",
-             "release names use lowercase letters, digits and . + - , starting with a letter"]
+            ["release-name", "invalid parent release name #{name.inspect}", Names::RELEASE_HINT]
           elsif seen.include?(name)
             ["duplicate-parent", "parent #{name.inspect} is listed twice", "list each parent once"]
           end

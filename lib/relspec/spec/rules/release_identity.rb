@@ -16,8 +16,7 @@ module Relspec
           location = file.location(["release"])
           unless Names.release?(release)
             return [Diagnostic.error("release-name", "invalid release name #{release.inspect}", location: location,
-                                     hint: "use lowercase letters, digits and . + - , starting with a letter " \
-                                           "(e.g. master-20.06)")]
+                                     hint: Names::RELEASE_HINT)]
           end
           return [] if release == file.file_release
 
