@@ -4,6 +4,7 @@ require "thor"
 require_relative "../version"
 require_relative "validate_command"
 require_relative "show_command"
+require_relative "catalog_commands"
 
 module Relspec
   module CLI
@@ -50,6 +51,9 @@ module Relspec
         finish ShowCommand.new(path: path, format: options[:format], origins: options[:origins],
                                out: $stdout, err: $stderr).call
       end
+
+      desc "catalog SUBCOMMAND", "The package database of a workspace (export, show)"
+      subcommand "catalog", CatalogCommands
 
       private
 

@@ -1,0 +1,22 @@
+# frozen_string_literal: true
+
+module Relspec
+  # Writes a file so that readers see either the old or the new content,
+  # never half of it: a temporary file in the same folder, then a rename.
+  module AtomicFile
+    module_function
+
+    def write(path, content)
+      dir = File.dirname(path)
+      temporary = File.join(dir, ".#{File.basename(path)}.#{Process.pid}.tmp")
+      File.open(temporary, File::WRONLY | File::CREAT | File::EXCL, 0o644) do |file|
+        file.binmode
+        file.write(content)
+        file.fsync
+      end
+      File.rename(temporary, path)
+    ensure
+      File.unlink(temporary) if temporary && File.exist?(temporary)
+    end
+  end
+end

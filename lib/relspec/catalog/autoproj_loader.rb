@@ -1,0 +1,255 @@
+# frozen_string_literal: true
+
+# Runs inside a child process started by AutoprojSource: loads one autoproj
+# workspace once per target distribution with the real autoproj gem, offline
+# and read-only, and prints what it found as JSON on stdout.
+#
+# It lives in its own process because autoproj keeps process-global state
+# (registered packages, Rake tasks, the current workspace) and because it has
+# to be patched not to write: relspec's own process stays clean.
+require "json"
+require "autoproj"
+
+module Relspec
+  class Catalog
+    module AutoprojLoader
+      # Raised for workspace problems a user must fix; printed as a diagnostic.
+      class WorkspaceProblem < StandardError
+        attr_reader :rule, :file, :line, :hint
+
+        def initialize(rule, message, file: nil, line: nil, hint: nil)
+          super(message)
+          @rule = rule
+          @file = file
+          @line = line
+          @hint = hint
+        end
+      end
+
+      # Package managers that can neither install nor prompt: a read-only load
+      # must never touch the system.
+      class InertPackageManager < Autoproj::PackageManagers::Manager
+        def initialize_environment; end
+
+        def configure_manager; end
+
+        def install(*)
+          raise WorkspaceProblem.new("workspace-write", "autoproj tried to install OS packages while reading the workspace")
+        end
+      end
+
+      # autoproj writes into a workspace while loading it even with
+      # read_only: true: it deletes unused folders in .autoproj/remotes,
+      # (re)creates autoproj/remotes symlinks, creates .test-results folders,
+      # and would clone missing package sets. These patches make it read only.
+      module ReadOnlyConfiguration
+        def update_remote_package_set(vcs, **)
+          return if File.exist?(Autoproj::PackageSet.raw_local_dir_of(ws, vcs))
+
+          raise WorkspaceProblem.new("missing-package-set", "package set #{vcs.url} is not checked out",
+                                     hint: "run `autoproj update` in the workspace first")
+        end
+
+        def cleanup_remotes_dir(*); end
+
+        def cleanup_remotes_user_dir(*); end
+
+        def create_remote_set_user_dir(vcs)
+          File.join(remotes_user_dir, Autoproj::PackageSet.name_of(ws, vcs))
+        end
+      end
+
+      # A workspace bootstrapped with another Ruby records it in config.yml;
+      # that matters for building, not for reading.
+      module AnyRubyConfiguration
+        def validate_ruby_executable; end
+      end
+
+      BUILD_TYPES = {
+        "Autobuild::Orogen" => "orogen", "Autobuild::CMake" => "cmake", "Autobuild::Autotools" => "autotools",
+        "Autobuild::Ruby" => "ruby", "Autobuild::Python" => "python", "Autobuild::ImporterPackage" => "import"
+      }.freeze
+
+      module_function
+
+      # The answer goes to the original stdout; autoproj's own chatter is
+      # sent to stderr so that it cannot corrupt the JSON.
+      def main
+        @answer = $stdout.dup
+        $stdout.reopen($stderr)
+        request = JSON.parse($stdin.read)
+        install_patches
+        answer("catalog" => load_all(request.fetch("root"), request.fetch("targets")))
+      rescue WorkspaceProblem => e
+        report(e.rule, e.message, file: e.file, line: e.line, hint: e.hint)
+      rescue Autoproj::ConfigError, Autoproj::PackageNotFound, Autobuild::Exception, Autoproj::InputError => e
+        report_autoproj_error(e)
+      end
+
+      def answer(document)
+        @answer.write(JSON.generate(document))
+        @answer.flush
+      end
+
+      def report(rule, message, file: nil, line: nil, hint: nil)
+        answer("error" => { "rule" => rule, "message" => message, "file" => file, "line" => line, "hint" => hint })
+      end
+
+      def report_autoproj_error(error)
+        message = error.message.strip
+        if (invalid = message.match(/invalid (\S+manifest\.xml): (.*)/m))
+          line = invalid[2][/Line: (\d+)/, 1]&.to_i
+          reason = invalid[2].lines.first.strip
+          return report("package-manifest", "broken manifest.xml: #{reason}", file: invalid[1], line: line,
+                                                                                hint: "fix the XML of the package's manifest.xml")
+        end
+        report("autoproj", message.lines.first(6).join.strip, hint: "autoproj could not load the workspace")
+      end
+
+      def install_patches
+        Autoproj::Ops::Configuration.prepend(ReadOnlyConfiguration)
+        Autoproj::Configuration.prepend(AnyRubyConfiguration)
+        # autoproj's DSL helper creates <srcdir>/.test-results; keep the rest of it.
+        Object.send(:define_method, :ruby_package_default_test_task) do |pkg|
+          pkg.with_tests if pkg.test_utility.source_dir
+        end
+      end
+
+      # +targets+: codename => [[type names], [labels]]
+      def load_all(root, targets)
+        per_target = targets.to_h { |codename, os| [codename, load_one(root, os)] }
+        first = per_target.values.first
+        packages = first[:packages].to_h do |name, package|
+          os = per_target.to_h { |codename, loaded| [codename, loaded[:os_dependencies].fetch(name)] }
+          [name, package.merge("os_dependencies" => os)]
+        end
+        first[:workspace].merge("packages" => packages)
+      end
+
+      def load_one(root, operating_system)
+        reset_global_state
+        resolver = Autoproj::OSPackageResolver.new(operating_system: operating_system)
+        managers = Autoproj::OSPackageInstaller::PACKAGE_MANAGERS.keys.to_h { |name| [name, InertPackageManager] }
+        ws = Autoproj::Workspace.from_dir(root, os_package_resolver: resolver, package_managers: managers)
+        ws.config.interactive = false
+        ws.setup(read_only: true, load_global_configuration: false)
+        # autoproj maps the `ruby` osdep to ruby31 on Ruby 3.1, which its own
+        # default.osdeps does not define.
+        resolver.add_entries({ ws.ruby_version_keyword => "ignore" }) unless resolver.include?(ws.ruby_version_keyword)
+        ws.load_package_sets(only_local: true, checkout_only: true)
+        ws.setup_all_package_directories
+        ws.finalize_package_setup
+        ws.manifest.each_package_definition do |definition|
+          ws.manifest.load_package_manifest(definition.name) if definition.checked_out?
+        end
+        ws.finalize_setup(read_only: true)
+        extract(ws)
+      ensure
+        ws&.clear_main_workspace
+      end
+
+      def reset_global_state
+        Autobuild::Package.clear
+        Rake::Task.clear
+        Autoproj.workspace = nil
+        Autobuild.env = nil
+      end
+
+      def extract(ws)
+        manifest = ws.manifest
+        packages = {}
+        os_dependencies = {}
+        manifest.each_package_definition do |definition|
+          packages[definition.name] = package_data(ws, definition)
+          os_dependencies[definition.name] = classify_os_dependencies(ws.os_package_resolver, definition.autobuild)
+        end
+        { packages: packages, os_dependencies: os_dependencies, workspace: workspace_data(manifest) }
+      end
+
+      def workspace_data(manifest)
+        metapackages = {}
+        manifest.each_metapackage do |meta|
+          next if meta.name.include?(" ") # autoproj's "main configuration" pseudo package sets
+
+          metapackages[meta.name] = meta.each_package.map(&:name).sort
+        end
+        {
+          "metapackages" => metapackages, "layout" => manifest.normalized_layout.keys,
+          "excluded" => manifest.manifest_exclusions.to_a.sort,
+          "ignored" => manifest.each_ignored_package.map(&:name).sort
+        }
+      end
+
+      def package_data(ws, definition)
+        autobuild = definition.autobuild
+        optional_packages, = autobuild.partition_optional_dependencies
+        {
+          "package_set" => definition.package_set.name, "build_type" => build_type(autobuild),
+          "vcs" => vcs_data(ws, definition.vcs), "source_dir" => relative(ws, autobuild.srcdir),
+          "checked_out" => definition.checked_out?, "dependencies" => autobuild.dependencies.sort,
+          "optional_dependencies" => optional_packages.sort
+        }.merge(manifest_data(ws, autobuild.description))
+      end
+
+      def build_type(autobuild)
+        return "archive" if autobuild.importer.is_a?(Autobuild::ArchiveImporter)
+
+        BUILD_TYPES.fetch(autobuild.class.name) do
+          BUILD_TYPES.find { |class_name, _| autobuild.class.ancestors.map(&:name).include?(class_name) }&.last || "import"
+        end
+      end
+
+      def vcs_data(ws, vcs)
+        url = vcs.url.to_s
+        # Paths inside the workspace are written relative to it, so the
+        # catalog does not depend on where the workspace lives.
+        url = url.sub(ws.root_dir, "$AUTOPROJ_ROOT") if url.start_with?("#{ws.root_dir}/")
+        { "type" => vcs.type.to_s, "url" => url, "branch" => vcs.options[:branch], "tag" => vcs.options[:tag],
+          "commit" => vcs.options[:commit] }.compact
+      end
+
+      def manifest_data(ws, description)
+        return {} if description.nil? || description.null?
+
+        maintainers = description.each_maintainer.map { |name, email| email ? "#{name} <#{email}>" : name }
+        {
+          "version" => description.version, "summary" => description.brief_description,
+          "description" => description.description&.strip, "license" => description.license,
+          "maintainer" => maintainers.empty? ? nil : maintainers.join(", "),
+          "manifest" => relative(ws, description.path)
+        }.compact
+      end
+
+      def relative(ws, path)
+        path.to_s.delete_prefix("#{ws.root_dir}/")
+      end
+
+      def classify_os_dependencies(resolver, autobuild)
+        result = Hash.new { |hash, key| hash[key] = [] }
+        autobuild.os_packages.sort.each do |name|
+          case resolver.availability_of(name)
+          when Autoproj::OSPackageResolver::NONEXISTENT then result["nonexistent"] << name
+          when Autoproj::OSPackageResolver::IGNORE then result["ignored"] << name
+          when Autoproj::OSPackageResolver::AVAILABLE then add_resolved(resolver, name, result)
+          else result["unresolved"] << name
+          end
+        end
+        result.transform_values { |names| names.uniq.sort }
+      end
+
+      def add_resolved(resolver, name, result)
+        resolver.resolve_package(name).each do |handler, status, names|
+          next unless status == Autoproj::OSPackageResolver::FOUND_PACKAGES
+
+          case handler
+          when resolver.os_package_manager then result["apt"].concat(names)
+          when "gem" then result["gems"].concat(names)
+          else result["unresolved"] << name
+          end
+        end
+      end
+    end
+  end
+end
+
+Relspec::Catalog::AutoprojLoader.main if $PROGRAM_NAME == __FILE__

@@ -1,0 +1,102 @@
+# frozen_string_literal: true
+
+require "json"
+require "open3"
+require "rbconfig"
+require_relative "../catalog"
+require_relative "../diagnostic"
+require_relative "../error"
+require_relative "git_state"
+
+module Relspec
+  class Catalog
+    # Reads a catalog from a real autoproj workspace with the autoproj gem.
+    #
+    # autoproj runs in a child process (AutoprojLoader) that loads the
+    # workspace once per target distribution, because autoproj decides at load
+    # time which dependencies are OS packages, keeps global state, and must be
+    # patched not to write into the workspace. Commits and commit times come
+    # from git in each checkout.
+    class AutoprojSource
+      LOADER = File.expand_path("autoproj_loader.rb", __dir__)
+
+      # +distributions+: codename => Spec::Distribution, the targets to resolve
+      # OS dependencies for.
+      def self.load(root, distributions)
+        new(root, distributions).load
+      end
+
+      def initialize(root, distributions)
+        @root = root
+        @distributions = distributions
+      end
+
+      def load
+        check_workspace
+        data = run_loader
+        commits = GitState.read(@root, data["packages"].select { |_, p| p["checked_out"] }.transform_values { |p| p["source_dir"] })
+        build(data, commits)
+      end
+
+      private
+
+      def check_workspace
+        return if File.file?(File.join(@root, ".autoproj", "config.yml"))
+
+        what = File.directory?(@root) ? "is not an autoproj workspace (no .autoproj/config.yml)" : "does not exist"
+        fail_with("not-a-workspace", "#{@root} #{what}",
+                  "point `workspace:` at the root of an autoproj workspace or at a catalog snapshot (.yml)")
+      end
+
+      def run_loader
+        request = { "root" => File.expand_path(@root), "targets" => operating_systems }
+        stdout, stderr, status = Open3.capture3(RbConfig.ruby, LOADER, stdin_data: JSON.generate(request))
+        answer = parse_answer(stdout)
+        raise Error, "loading #{@root} with autoproj failed:\n#{stderr.lines.last(15).join}" unless answer && status.success?
+
+        report_problem(answer["error"]) if answer["error"]
+        answer.fetch("catalog")
+      end
+
+      def parse_answer(stdout)
+        JSON.parse(stdout)
+      rescue JSON::ParserError
+        nil
+      end
+
+      def operating_systems
+        @distributions.to_h do |codename, distribution|
+          [codename, [distribution.osdeps_type_key.split(","), distribution.labels]]
+        end
+      end
+
+      def report_problem(problem)
+        file = problem["file"]
+        location = file ? Location.new(file: file, line: problem["line"], column: problem["line"] && 1).freeze : Location.file_only(@root)
+        raise InvalidInput, [Diagnostic.error(problem["rule"], problem["message"], location: location, hint: problem["hint"])]
+      end
+
+      def fail_with(rule, message, hint)
+        raise InvalidInput, [Diagnostic.error(rule, message, location: Location.file_only(@root), hint: hint)]
+      end
+
+      def build(data, commits)
+        packages = data["packages"].to_h do |name, entry|
+          commit, time = commits[name]
+          vcs = Vcs.from_h(entry.fetch("vcs").merge("commit" => commit || entry["vcs"]["commit"]).compact)
+          package = Package.new(
+            name: name, package_set: entry["package_set"], build_type: entry["build_type"], vcs: vcs, commit_time: time,
+            source_dir: entry["source_dir"], checked_out: entry["checked_out"], version: entry["version"],
+            summary: entry["summary"], description: entry["description"], license: entry["license"],
+            maintainer: entry["maintainer"], dependencies: entry["dependencies"],
+            optional_dependencies: entry["optional_dependencies"],
+            os_dependencies: entry["os_dependencies"].transform_values { |deps| OsDependencies.from_h(deps) }
+          )
+          [name, package]
+        end
+        Catalog.new(packages: packages, metapackages: data["metapackages"], layout: data["layout"],
+                    excluded: data["excluded"], ignored: data["ignored"], codenames: @distributions.keys)
+      end
+    end
+  end
+end

@@ -1,0 +1,75 @@
+# frozen_string_literal: true
+
+require "open3"
+
+module Relspec
+  class Catalog
+    # The commit each checkout holds and its UTC commit time, read with one
+    # `git log` per checkout on a small pool of threads (each checkout is its
+    # own repository, so there is no single call that answers for all).
+    module GitState
+      WORKERS = 4
+
+      module_function
+
+      # +checkouts+: package name => source dir relative to +root+.
+      # Returns name => [commit, "YYYY-MM-DDTHH:MM:SSZ"] for git checkouts.
+      def read(root, checkouts)
+        queue = Queue.new
+        checkouts.each { |entry| queue << entry }
+        results = {}
+        lock = Mutex.new
+        Array.new([WORKERS, checkouts.size].min) do
+          Thread.new do
+            while (entry = pop(queue))
+              name, dir = entry
+              state = commit_of(File.join(root, dir))
+              lock.synchronize { results[name] = state } if state
+            end
+          end
+        end.each(&:join)
+        results
+      end
+
+      def pop(queue)
+        queue.pop(true)
+      rescue ThreadError
+        nil
+      end
+
+      def commit_of(dir)
+        return nil unless File.exist?(File.join(dir, ".git"))
+
+        log(dir, "HEAD")
+      end
+
+      # Where a pin points in a checkout: [commit, time] or nil if the
+      # checkout does not have it (autoproj clones name their remote
+      # "autobuild", so branches are looked up there first).
+      def resolve(dir, ref, value)
+        return nil unless File.exist?(File.join(dir, ".git"))
+
+        candidates =
+          case ref
+          when "commit" then [value]
+          when "tag" then ["refs/tags/#{value}"]
+          when "branch" then ["refs/remotes/autobuild/#{value}", "refs/heads/#{value}"]
+          end
+        candidates.each do |candidate|
+          output, status = Open3.capture2("git", "-C", dir, "rev-parse", "--verify", "--quiet", "--end-of-options",
+                                          "#{candidate}^{commit}", err: File::NULL)
+          return log(dir, output.strip) if status.success?
+        end
+        nil
+      end
+
+      def log(dir, revision)
+        output, status = Open3.capture2("git", "-C", dir, "log", "-1", "--format=%H %ct", revision, "--", err: File::NULL)
+        return nil unless status.success?
+
+        commit, seconds = output.split
+        [commit, Time.at(Integer(seconds)).utc.strftime("%Y-%m-%dT%H:%M:%SZ")]
+      end
+    end
+  end
+end

@@ -1,0 +1,46 @@
+# frozen_string_literal: true
+
+module Relspec
+  class Catalog
+    # The OS dependencies of one package resolved for one distribution, as
+    # autoproj's osdeps resolve them: Debian packages, gems, names the
+    # distribution does not need (ignore), names it cannot provide
+    # (nonexistent) and names no osdeps file defines for it (unresolved).
+    class OsDependencies
+      FIELDS = %w[apt gems ignored nonexistent unresolved].freeze
+
+      attr_reader(*FIELDS)
+
+      def self.build(**lists)
+        new(**FIELDS.to_h { |field| [field.to_sym, lists.fetch(field.to_sym, [])] })
+      end
+
+      def self.from_h(hash)
+        build(**FIELDS.to_h { |field| [field.to_sym, hash.fetch(field, [])] })
+      end
+
+      def initialize(apt:, gems:, ignored:, nonexistent:, unresolved:)
+        @apt = apt.uniq.sort.freeze
+        @gems = gems.uniq.sort.freeze
+        @ignored = ignored.uniq.sort.freeze
+        @nonexistent = nonexistent.uniq.sort.freeze
+        @unresolved = unresolved.uniq.sort.freeze
+        freeze
+      end
+
+      EMPTY = build
+
+      def empty?
+        FIELDS.all? { |field| public_send(field).empty? }
+      end
+
+      def ==(other)
+        other.is_a?(OsDependencies) && to_h == other.to_h
+      end
+
+      def to_h
+        FIELDS.to_h { |field| [field, public_send(field)] }.reject { |_field, names| names.empty? }
+      end
+    end
+  end
+end

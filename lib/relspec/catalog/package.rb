@@ -1,0 +1,82 @@
+# frozen_string_literal: true
+
+require_relative "vcs"
+require_relative "os_dependencies"
+
+module Relspec
+  class Catalog
+    # One autoproj package as relspec needs it, independent of autoproj.
+    #
+    # +commit_time+ is the UTC commit time of the checked-out commit as
+    # "YYYY-MM-DDTHH:MM:SSZ" (the upstream version is derived from it);
+    # +os_dependencies+ maps a distribution codename to OsDependencies.
+    class Package
+      BUILD_TYPES = %w[cmake orogen autotools ruby python import archive meta].freeze
+
+      FIELDS = %i[name package_set build_type vcs commit_time version summary description license maintainer
+                  source_dir checked_out dependencies optional_dependencies os_dependencies].freeze
+
+      attr_reader(*FIELDS)
+
+      def initialize(name:, package_set:, build_type:, vcs:, commit_time:, source_dir:, checked_out: true, version: nil,
+                     summary: nil, description: nil, license: nil, maintainer: nil, dependencies: [],
+                     optional_dependencies: [], os_dependencies: {})
+        @name = name
+        @package_set = package_set
+        @build_type = build_type
+        @vcs = vcs
+        @commit_time = commit_time
+        @version = version
+        @summary = summary
+        @description = description
+        @license = license
+        @maintainer = maintainer
+        @source_dir = source_dir
+        @checked_out = checked_out
+        @dependencies = dependencies.uniq.sort.freeze
+        @optional_dependencies = optional_dependencies.uniq.sort.freeze
+        @os_dependencies = os_dependencies.sort.to_h.freeze
+        freeze
+      end
+
+      def os_dependencies_for(codename)
+        os_dependencies.fetch(codename, OsDependencies::EMPTY)
+      end
+
+      def with(**changes)
+        self.class.new(**FIELDS.to_h { |field| [field, public_send(field)] }.merge(changes))
+      end
+
+      def ==(other)
+        other.is_a?(Package) && to_h == other.to_h
+      end
+      alias_method :eql?, :==
+
+      def hash
+        to_h.hash
+      end
+
+      def to_h
+        {
+          "package_set" => package_set, "build_type" => build_type, "vcs" => vcs.to_h,
+          "commit_time" => commit_time, "version" => version, "summary" => summary, "description" => description,
+          "license" => license, "maintainer" => maintainer, "source_dir" => source_dir,
+          "checked_out" => checked_out ? nil : false,
+          "dependencies" => dependencies, "optional_dependencies" => optional_dependencies,
+          "os_dependencies" => os_dependencies.transform_values(&:to_h)
+        }.reject { |_key, value| value.nil? || value == [] || value == {} }
+      end
+
+      def self.from_h(name, hash)
+        new(
+          name: name, package_set: hash["package_set"], build_type: hash["build_type"],
+          vcs: Vcs.from_h(hash.fetch("vcs", {})), commit_time: hash["commit_time"], version: hash["version"],
+          summary: hash["summary"], description: hash["description"], checked_out: hash.fetch("checked_out", true), license: hash["license"], maintainer: hash["maintainer"],
+          source_dir: hash["source_dir"], dependencies: hash.fetch("dependencies", []),
+          optional_dependencies: hash.fetch("optional_dependencies", []),
+          os_dependencies: hash.fetch("os_dependencies", {}).transform_values { |deps| OsDependencies.from_h(deps) }
+        )
+      end
+    end
+  end
+end

@@ -1,0 +1,73 @@
+# frozen_string_literal: true
+
+require_relative "source"
+require_relative "pinning"
+require_relative "selection"
+
+module Relspec
+  class Catalog
+    # The catalog of one release: its workspace read for the release's
+    # target distributions, its pins applied, and the selected packages
+    # (with dependencies) for each target codename.
+    class ReleaseCatalog
+      attr_reader :catalog, :selections, :workspace
+
+      # +resolution+: a valid Spec::Resolution. Raises InvalidInput.
+      def self.load(resolution)
+        spec_file = resolution.spec_file
+        effective = resolution.effective
+        workspace = workspace_path(spec_file, effective)
+        distributions = effective.distributions.slice(*effective.targets.keys)
+        catalog = Source.load(workspace, distributions)
+        root = SnapshotSource.snapshot?(workspace) ? nil : workspace
+        pins = effective["pins"] || {}
+        pinned = Pinning.apply(catalog, pins, root: root,
+                                              locate: ->(name) { effective.pin_origin(name)&.location })
+        new(pinned, select_all(pinned, effective, spec_file, workspace), workspace)
+      end
+
+      def self.workspace_path(spec_file, effective)
+        path = effective["workspace"]
+        unless path
+          raise InvalidInput, [Diagnostic.error("missing-workspace", "release #{effective.release} names no workspace",
+                                                location: spec_file.location(["release"]),
+                                                hint: "add `workspace:` (an autoproj workspace or a catalog snapshot)")]
+        end
+        File.expand_path(path, File.dirname(spec_file.path)).then { |full| relative_to_cwd(full) }
+      end
+
+      # Messages name paths as the user would type them.
+      def self.relative_to_cwd(path)
+        cwd = "#{Dir.pwd}/"
+        path.start_with?(cwd) ? path.delete_prefix(cwd) : path
+      end
+
+      def self.select_all(catalog, effective, spec_file, workspace)
+        select = effective["select"]
+        locate = lambda do |name|
+          index = select&.index(name)
+          index ? spec_file.location(["select", index]) : nil
+        end
+        problems = []
+        selections = effective.targets.keys.sort.to_h do |codename|
+          [codename, Selection.resolve(catalog, select, codename: codename, workspace: workspace, locate: locate)]
+        rescue InvalidInput => e
+          problems.concat(e.diagnostics)
+          [codename, nil]
+        end
+        raise InvalidInput, problems.uniq(&:to_s) unless problems.empty?
+
+        selections
+      end
+
+      private_class_method :workspace_path, :relative_to_cwd, :select_all
+
+      def initialize(catalog, selections, workspace)
+        @catalog = catalog
+        @selections = selections.freeze
+        @workspace = workspace
+        freeze
+      end
+    end
+  end
+end

@@ -1,0 +1,128 @@
+# frozen_string_literal: true
+
+require_relative "../diagnostic"
+require_relative "../error"
+require_relative "../suggestion"
+
+module Relspec
+  class Catalog
+    # The packages a release is made of: the spec's `select` (packages and
+    # metapackages; default the workspace layout) and, recursively, their
+    # dependencies, honouring autoproj's excluded and ignored packages.
+    class Selection
+      attr_reader :names, :roots
+
+      # +select+: names from the spec, or nil for the layout; +codename+: the
+      # target whose OS dependencies must all resolve; +locate+: name =>
+      # Location of the `select` entry, for messages. Raises InvalidInput.
+      # +workspace+: where the catalog came from, for problems of the workspace.
+      def self.resolve(catalog, select, codename:, workspace:, locate: ->(_name) {})
+        new(catalog, select, codename, workspace, locate)
+      end
+
+      def initialize(catalog, select, codename, workspace, locate)
+        @catalog = catalog
+        @codename = codename
+        @locate = locate
+        @fallback = Location.file_only(workspace)
+        @problems = []
+        @roots = expand_roots(select || catalog.layout)
+        @names = closure(@roots)
+        @names.each { |name| check_buildable(@catalog.package(name)) }
+        raise InvalidInput, @problems unless @problems.empty?
+
+        @names.freeze
+        freeze
+      end
+
+      def include?(name)
+        @names.include?(name)
+      end
+
+      def packages
+        @names.map { |name| @catalog.package(name) }
+      end
+
+      private
+
+      def expand_roots(requested)
+        requested.flat_map do |name|
+          if @catalog.metapackage?(name)
+            @catalog.metapackages[name].reject { |member| unavailable?(member) }
+          elsif @catalog.package?(name)
+            problem("excluded-package", "#{name} is selected but excluded by the workspace manifest",
+                    location: @locate.call(name)) if excluded?(name)
+            [name]
+          else
+            unknown(name)
+            []
+          end
+        end.uniq
+      end
+
+      def closure(roots)
+        seen = {}
+        queue = roots.reject { |name| excluded?(name) || ignored?(name) }
+        until queue.empty?
+          name = queue.shift
+          next if seen[name]
+
+          seen[name] = true
+          package = @catalog.package(name)
+          queue.concat(required(package))
+          queue.concat(package.optional_dependencies.reject { |dep| unavailable?(dep) || !@catalog.package?(dep) })
+        end
+        seen.keys.sort
+      end
+
+      def required(package)
+        package.dependencies.filter_map do |dependency|
+          next if ignored?(dependency)
+
+          if excluded?(dependency)
+            problem("excluded-dependency", "#{package.name} depends on #{dependency}, which the workspace manifest excludes")
+          elsif !@catalog.package?(dependency)
+            problem("unknown-dependency", "#{package.name} depends on #{dependency}, which the workspace does not define")
+          else
+            dependency
+          end
+        end
+      end
+
+      def unavailable?(name)
+        excluded?(name) || ignored?(name)
+      end
+
+      def excluded?(name)
+        @catalog.excluded.include?(name)
+      end
+
+      def ignored?(name)
+        @catalog.ignored.include?(name)
+      end
+
+      def unknown(name)
+        problem("unknown-package", "select names #{name.inspect}, which is neither a package nor a metapackage " \
+                                   "of the workspace", hint: Suggestion.hint(name, @catalog.names), location: @locate.call(name))
+      end
+
+      # A package the release is made of must have a source and OS
+      # dependencies that the target can provide (or knowingly lacks).
+      def check_buildable(package)
+        unless package.checked_out
+          problem("not-checked-out", "#{package.name} is part of the release but not checked out at #{package.source_dir}",
+                  hint: "run `autoproj update #{package.name}` in the workspace")
+        end
+        package.os_dependencies_for(@codename).unresolved.each do |osdep|
+          problem("unknown-osdep", "#{package.name} depends on #{osdep.inspect}, which no osdeps file defines for #{@codename}",
+                  hint: "add a #{@codename} entry for #{osdep} to a package set's .osdeps file")
+        end
+      end
+
+      def problem(rule, message, hint: nil, location: nil)
+        @problems << Diagnostic.error(rule, message, location: location || @fallback, hint: hint)
+        nil
+      end
+    end
+  end
+end

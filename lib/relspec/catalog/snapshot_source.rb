@@ -1,0 +1,53 @@
+# frozen_string_literal: true
+
+require "psych"
+require_relative "../catalog"
+require_relative "../yaml/located_document"
+require_relative "../error"
+
+module Relspec
+  class Catalog
+    # A catalog written to YAML (`relspec catalog export`) so that CI can plan
+    # a release without the workspace. The file is deterministic: keys in a
+    # fixed order, packages sorted, no timestamps or host paths.
+    module SnapshotSource
+      FORMAT_KEY = "relspec_catalog"
+      FORMAT_VERSION = 1
+
+      module_function
+
+      def dump(catalog)
+        Psych.dump({ FORMAT_KEY => FORMAT_VERSION }.merge(catalog.to_h), line_width: -1)
+      end
+
+      def snapshot?(path)
+        File.file?(path) && path.end_with?(".yml", ".yaml")
+      end
+
+      def load(path)
+        document = Yaml::LocatedDocument.load(path)
+        raise InvalidInput, document.diagnostics unless document.ok?
+
+        data = document.data
+        unless data.is_a?(Hash) && data[FORMAT_KEY] == FORMAT_VERSION
+          raise InvalidInput, [Diagnostic.error("catalog-format", "#{path} is not a relspec catalog snapshot " \
+                                                                  "(format #{FORMAT_VERSION})",
+                                                location: document.location([]),
+                                                hint: "write one with `relspec catalog export WORKSPACE > #{path}`")]
+        end
+        build(data, document)
+      end
+
+      def build(data, document)
+        packages = data.fetch("packages", {}).to_h { |name, entry| [name, Package.from_h(name, entry)] }
+        Catalog.new(packages: packages, metapackages: data.fetch("metapackages", {}), layout: data.fetch("layout", []),
+                    excluded: data.fetch("excluded", []), ignored: data.fetch("ignored", []),
+                    codenames: data.fetch("codenames", []))
+      rescue ArgumentError, TypeError, NoMethodError, KeyError => e
+        raise InvalidInput, [Diagnostic.error("catalog-format", "malformed catalog snapshot: #{e.message}",
+                                              location: document.location([]),
+                                              hint: "regenerate it with `relspec catalog export`")]
+      end
+    end
+  end
+end

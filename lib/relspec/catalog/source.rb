@@ -1,0 +1,39 @@
+# frozen_string_literal: true
+
+require_relative "snapshot_source"
+require_relative "../diagnostic"
+require_relative "../error"
+
+module Relspec
+  class Catalog
+    # Chooses how to read a spec's `workspace:`: a catalog snapshot file
+    # (.yml) or an autoproj workspace folder. autoproj is loaded only for the
+    # latter, and then only in a child process.
+    module Source
+      module_function
+
+      # +distributions+: codename => Spec::Distribution the OS dependencies
+      # must be known for.
+      def load(path, distributions)
+        if SnapshotSource.snapshot?(path)
+          catalog = SnapshotSource.load(path)
+          check_codenames(path, catalog, distributions.keys)
+          catalog
+        else
+          require_relative "autoproj_source"
+          AutoprojSource.load(path, distributions)
+        end
+      end
+
+      def check_codenames(path, catalog, codenames)
+        missing = codenames - catalog.codenames
+        return if missing.empty?
+
+        raise InvalidInput, [Diagnostic.error("catalog-targets",
+                                              "the catalog snapshot has no OS dependencies for #{missing.join(', ')}",
+                                              location: Location.file_only(path),
+                                              hint: "export it again with --targets #{(catalog.codenames | codenames).join(',')}")]
+      end
+    end
+  end
+end

@@ -1,0 +1,83 @@
+# frozen_string_literal: true
+
+require_relative "workspace_builder"
+
+# The demo workspace: what the tests load and what examples/ ships. A small
+# Rock-like stack covering every build type relspec packages, a metapackage,
+# an optional dependency, an excluded and an ignored package, and OS
+# dependencies that differ between bionic and buster (eigen does not exist on
+# buster).
+module DemoWorkspace
+  OSDEPS = <<~YAML
+    boost:
+      ubuntu:
+        '18.04,bionic': [libboost-system-dev, libboost-thread-dev]
+        default: libboost-all-dev
+      debian:
+        buster: libboost1.67-all-dev
+        default: libboost-all-dev
+    eigen:
+      ubuntu: libeigen3-dev
+      debian:
+        buster: nonexistent
+        default: libeigen3-dev
+    yaml-cpp:
+      debian,ubuntu: libyaml-cpp-dev
+    nokogiri: gem
+    qt5-tools:
+      ubuntu: ignore
+      debian: qttools5-dev-tools
+  YAML
+
+  CMAKE_LISTS = <<~CMAKE
+    cmake_minimum_required(VERSION 3.10)
+    project(%<project>s VERSION %<version>s LANGUAGES NONE)
+    install(FILES README DESTINATION share/%<project>s)
+  CMAKE
+
+  # name => [build type, commit date, manifest version, dependencies, optional, osdeps]
+  PACKAGES = {
+    "base/cmake" => [:cmake, "2020-05-04T08:00:00Z", "1.0", [], [], []],
+    "base/types" => [:cmake, "2020-06-01T10:30:00Z", "2.0", ["base/cmake"], ["base/logging"], %w[boost eigen]],
+    "base/logging" => [:cmake, "2020-05-20T12:00:00Z", "1.1", ["base/cmake"], [], []],
+    "drivers/iodrivers_base" => [:cmake, "2020-06-03T09:15:00Z", "1.0", ["base/types", "base/logging"], [], ["boost"]],
+    "tools/orocos.rb" => [:ruby, "2020-06-05T16:45:00Z", "0.9", ["base/types", "tools/unused"], [],
+                          %w[nokogiri qt5-tools ruby]],
+    "tools/legacy" => [:autotools, "2019-11-11T11:11:11Z", "0.1", [], [], ["yaml-cpp"]],
+    "data/models" => [:import, "2020-04-01T00:00:00Z", "3", [], [], []],
+    "drivers/old_driver" => [:cmake, "2018-01-01T00:00:00Z", "0.1", ["base/types"], [], []]
+  }.freeze
+
+  # base/types has an older release tagged v2.0.0 (what demo-child pins)
+  HISTORY = { "base/types" => [{ date: "2020-03-02T14:00:00Z", tag: "v2.0.0" }] }.freeze
+
+  module_function
+
+  def build(base)
+    builder = WorkspaceBuilder.new(base)
+    PACKAGES.each do |name, (type, date, version, dependencies, optional, osdeps)|
+      builder.package(name, type: type, date: date, version: version, dependencies: dependencies, optional: optional,
+                            osdeps: osdeps, files: files_for(name, type, version), history: HISTORY.fetch(name, []))
+    end
+    # ignored by the manifest, and never checked out: dependencies on it vanish
+    builder.package("tools/unused", type: :import, date: "2020-01-01T00:00:00Z", checkout: false)
+    builder.ignore("tools/unused")
+    builder.metapackage("demo.core", "base/types", "base/logging", "drivers/iodrivers_base", "tools/orocos.rb")
+    builder.layout("demo.core", "data/models", "tools/legacy")
+    builder.exclude("drivers/old_driver")
+    builder.osdeps(OSDEPS)
+    builder.create
+    builder
+  end
+
+  def files_for(name, type, version)
+    project = name.tr("/", "-")
+    readme = { "README" => "#{name}: part of the relspec demo workspace.\n" }
+    case type
+    when :cmake then readme.merge("CMakeLists.txt" => format(CMAKE_LISTS, project: project, version: version))
+    when :autotools then readme.merge("configure.ac" => "AC_INIT([#{project}], [#{version}])\nAC_OUTPUT\n")
+    when :ruby then readme.merge("lib/#{File.basename(name, '.rb')}.rb" => "module Orocos\nend\n")
+    else readme
+    end
+  end
+end
