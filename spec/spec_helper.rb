@@ -5,6 +5,7 @@ require "relspec"
 require "tmpdir"
 require_relative "support/cli_runner"
 require_relative "support/spec_writer"
+require_relative "support/workspace_helpers"
 
 RSpec.configure do |config|
   config.expect_with(:rspec) { |c| c.syntax = :expect }
@@ -13,4 +14,5 @@ RSpec.configure do |config|
   Kernel.srand config.seed
   config.include CliRunner
   config.include SpecWriter
+  config.include WorkspaceHelpers
 end

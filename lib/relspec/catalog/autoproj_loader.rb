@@ -84,6 +84,12 @@ module Relspec
         report(e.rule, e.message, file: e.file, line: e.line, hint: e.hint)
       rescue Autoproj::ConfigError, Autoproj::PackageNotFound, Autobuild::Exception, Autoproj::InputError => e
         report_autoproj_error(e)
+      rescue ArgumentError => e
+        # autoproj reports a package set folder that does not exist this way
+        raise unless (missing = e.message[/'([^']+)' is neither a remote source specification, nor an existing local directory/, 1])
+
+        report("missing-package-set", "package set #{missing} does not exist", file: "autoproj/manifest",
+                                                                              hint: "check `package_sets:` in autoproj/manifest, or run `autoproj update`")
       end
 
       def answer(document)

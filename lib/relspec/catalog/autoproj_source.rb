@@ -71,7 +71,8 @@ module Relspec
       end
 
       def report_problem(problem)
-        file = problem["file"]
+        file = problem["file"] && File.expand_path(problem["file"], @root)
+        file = file.sub("#{File.expand_path(@root)}/", "#{@root}/") if file
         location = file ? Location.new(file: file, line: problem["line"], column: problem["line"] && 1).freeze : Location.file_only(@root)
         raise InvalidInput, [Diagnostic.error(problem["rule"], problem["message"], location: location, hint: problem["hint"])]
       end

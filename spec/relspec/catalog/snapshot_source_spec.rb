@@ -1,0 +1,59 @@
+# frozen_string_literal: true
+
+require "spec_helper"
+require "relspec/catalog/snapshot_source"
+
+RSpec.describe Relspec::Catalog::SnapshotSource do
+  before(:all) do
+    @base = Dir.mktmpdir("relspec-workspace")
+    @builder = DemoWorkspace.build(@base)
+    @catalog = load_catalog(@builder.root)
+  end
+
+  after(:all) { FileUtils.rm_rf(@base) }
+
+  def snapshot_file(text)
+    path = File.join(@base, "catalog-#{text.hash.abs}.yml")
+    File.write(path, text)
+    path
+  end
+
+  it "round-trips a catalog byte for byte" do
+    text = described_class.dump(@catalog)
+    loaded = described_class.load(snapshot_file(text))
+    expect(loaded).to eq(@catalog)
+    expect(described_class.dump(loaded)).to eq(text)
+  end
+
+  it "writes no host paths, so workspaces in different folders give the same bytes" do
+    other_base = Dir.mktmpdir("relspec-other")
+    other = load_catalog(DemoWorkspace.build(other_base).root)
+    expect(described_class.dump(other)).to eq(described_class.dump(@catalog))
+    expect(described_class.dump(@catalog)).not_to include(@base)
+  ensure
+    FileUtils.rm_rf(other_base)
+  end
+
+  it "is what `relspec catalog export` writes, the same bytes on every run" do
+    outputs = Array.new(2) do |i|
+      out = File.join(@base, "export-#{i}.yml")
+      run = relspec("catalog", "export", @builder.root, "--targets", "bionic,buster", "--output", out)
+      expect(run.exit_code).to eq(0), run.stderr
+      File.read(out)
+    end
+    expect(outputs[0]).to eq(outputs[1])
+    expect(outputs[0]).to eq(described_class.dump(@catalog))
+  end
+
+  it "refuses a file that is not a snapshot" do
+    path = snapshot_file("packages: {}\n")
+    expect { described_class.load(path) }.to raise_error(Relspec::InvalidInput, /is not a relspec catalog snapshot/)
+  end
+
+  it "refuses to serve distributions the snapshot was not exported for" do
+    require "relspec/catalog/source"
+    path = snapshot_file(described_class.dump(@catalog))
+    expect { Relspec::Catalog::Source.load(path, distributions(%w[bionic focal])) }
+      .to raise_error(Relspec::InvalidInput, /no OS dependencies for focal/)
+  end
+end
