@@ -25,3 +25,16 @@ RSpec.describe "README" do
     used.each { |command| expect(help).to include("relspec #{command}") }
   end
 end
+
+RSpec.describe "the README's example command" do
+  it "creates the example workspace and lists the child release's packages" do
+    create = Open3.capture2e(RbConfig.ruby, File.join(CliRunner::ROOT, "examples", "create-workspace"))
+    expect(create[1]).to be_success, create[0]
+    expect(relspec("validate").exit_code).to eq(0)
+    run = relspec("catalog", "show", "specs/demo-child.yml")
+    expect(run.exit_code).to eq(0), run.stderr
+    expect(run.stdout.lines.first).to eq("bionic: 7 packages from examples/workspace\n")
+    # base/types at the commit its pin (tag v2.0.0) names
+    expect(run.stdout).to match(%r{^  base/types\s+cmake\s+\h{10} 2020-03-02T14:00:00Z$})
+  end
+end

@@ -1,12 +1,13 @@
 # frozen_string_literal: true
 
 require "open3"
+require_relative "git_repository"
 
 module Relspec
   class Catalog
-    # The commit each checkout holds and its UTC commit time, read with one
-    # `git log` per checkout on a small pool of threads (each checkout is its
-    # own repository, so there is no single call that answers for all).
+    # The commit each checkout holds and its UTC commit time. Read from the
+    # .git folders directly (GitRepository); checkouts it cannot read are asked
+    # with one `git log` each, on a small pool of threads.
     module GitState
       WORKERS = 4
 
@@ -40,7 +41,14 @@ module Relspec
       def commit_of(dir)
         return nil unless File.exist?(File.join(dir, ".git"))
 
+        commit, seconds = GitRepository.new(dir).head
+        return [commit, utc(seconds)] if commit
+
         log(dir, "HEAD")
+      end
+
+      def utc(seconds)
+        Time.at(seconds).utc.strftime("%Y-%m-%dT%H:%M:%SZ")
       end
 
       # Where a pin points in a checkout: [commit, time] or nil if the
@@ -68,7 +76,7 @@ module Relspec
         return nil unless status.success?
 
         commit, seconds = output.split
-        [commit, Time.at(Integer(seconds)).utc.strftime("%Y-%m-%dT%H:%M:%SZ")]
+        [commit, utc(Integer(seconds))]
       end
     end
   end

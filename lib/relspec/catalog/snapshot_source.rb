@@ -1,7 +1,7 @@
 # frozen_string_literal: true
 
-require "psych"
 require_relative "../catalog"
+require_relative "../yaml/writer"
 require_relative "../yaml/located_document"
 require_relative "../error"
 
@@ -17,7 +17,7 @@ module Relspec
       module_function
 
       def dump(catalog)
-        Psych.dump({ FORMAT_KEY => FORMAT_VERSION }.merge(catalog.to_h), line_width: -1)
+        Yaml::Writer.dump({ FORMAT_KEY => FORMAT_VERSION }.merge(catalog.to_h))
       end
 
       def snapshot?(path)

@@ -2,14 +2,13 @@
 
 require "thor"
 require_relative "../version"
-require_relative "validate_command"
-require_relative "show_command"
 require_relative "catalog_commands"
 
 module Relspec
   module CLI
     # The command line (DESIGN §7). Each command is a small class; this file
-    # only declares options and hands them over.
+    # only declares options and hands them over. Command classes are required
+    # when their command runs, so that each command loads only what it needs.
     class Main < Thor
       package_name "relspec"
 
@@ -35,6 +34,7 @@ module Relspec
       TEXT
       option :format, enum: %w[text json], default: "text", desc: "Output format"
       def validate(*paths)
+        require_relative "validate_command"
         finish ValidateCommand.new(paths: paths, format: options[:format], out: $stdout, err: $stderr).call
       end
 
@@ -48,6 +48,7 @@ module Relspec
       option :origins, type: :boolean, default: false, desc: "Annotate each value with where it was written"
       option :format, enum: %w[yaml json], default: "yaml", desc: "Output format"
       def show(path)
+        require_relative "show_command"
         finish ShowCommand.new(path: path, format: options[:format], origins: options[:origins],
                                out: $stdout, err: $stderr).call
       end
