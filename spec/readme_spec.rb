@@ -19,22 +19,22 @@ RSpec.describe "README" do
     expect(ci.lines.map(&:strip)).to include(commands[1])
   end
 
-  it "names only relspec commands that exist" do
-    used = commands[0].scan(/relspec (\w+)/).flatten.uniq
+  it "names only relspec commands that exist, in the example command and bin/demo" do
+    demo = File.readlines(File.join(CliRunner::ROOT, "bin", "demo")).reject { |line| line.start_with?("#") }.join
+    used = "#{commands[0]}\n#{demo}".scan(/relspec (\w+)/).flatten.uniq
+    expect(used).to include("plan")
     help = relspec("help").stdout
     used.each { |command| expect(help).to include("relspec #{command}") }
   end
 end
 
 RSpec.describe "the README's example command" do
-  it "creates the example workspace and lists the child release's packages" do
-    create = Open3.capture2e(RbConfig.ruby, File.join(CliRunner::ROOT, "examples", "create-workspace"))
-    expect(create[1]).to be_success, create[0]
-    expect(relspec("validate").exit_code).to eq(0)
-    run = relspec("catalog", "show", "specs/demo-child.yml")
-    expect(run.exit_code).to eq(0), run.stderr
-    expect(run.stdout.lines.first).to eq("bionic: 7 packages from examples/workspace\n")
-    # base/types at the commit its pin (tag v2.0.0) names
-    expect(run.stdout).to match(%r{^  base/types\s+cmake\s+\h{10} 2020-03-02T14:00:00Z$})
+  it "creates the example, publishes demo-base and plans demo-child" do
+    output, status = Open3.capture2e(File.join(CliRunner::ROOT, "bin", "demo"))
+    expect(status).to be_success, output
+    expect(output).to include("2 specs valid: specs/demo-base.yml specs/demo-child.yml")
+    expect(output).to match(%r{^bionic/amd64\s+4\s+3\s+0$})
+    expect(output).to include('blacklisted by "base/types" (the project needs the 2020 types API)')
+    expect(output).to include("depends on base/types, which is rebuilt because blacklisted by")
   end
 end

@@ -53,6 +53,32 @@ module Relspec
                                out: $stdout, err: $stderr).call
       end
 
+      desc "plan SPEC", "Decide per target what the release inherits, builds or has published, and why"
+      long_desc <<~TEXT
+        Reads the spec hierarchy, the workspace (or catalog snapshot) and what the
+        ancestors' apt repositories hold, and prints per target how many packages
+        are inherited, built and already published, then every build with its cause
+        chain. --write records the plan in releases/<release>/lock.yml.
+      TEXT
+      option :write, type: :boolean, default: false, desc: "Write releases/<release>/lock.yml"
+      option :format, enum: %w[text json markdown], default: "text", desc: "Output format"
+      option :target, type: :string, desc: "Only this target (codename/arch)"
+      option :timeout, type: :numeric, default: 10, desc: "HTTP timeout in seconds"
+      def plan(path)
+        require_relative "plan_command"
+        finish PlanCommand.new(path: path, format: options[:format], write: options[:write], target: options[:target],
+                               timeout: options[:timeout], out: $stdout, err: $stderr).call
+      end
+
+      desc "why SPEC PACKAGE", "Explain one package's decision, with its full cause chain"
+      option :target, type: :string, desc: "Only this target (codename/arch)"
+      option :timeout, type: :numeric, default: 10, desc: "HTTP timeout in seconds"
+      def why(path, package)
+        require_relative "why_command"
+        finish WhyCommand.new(path: path, package: package, target: options[:target], timeout: options[:timeout],
+                              out: $stdout).call
+      end
+
       desc "catalog SUBCOMMAND", "The package database of a workspace (export, show)"
       subcommand "catalog", CatalogCommands
 

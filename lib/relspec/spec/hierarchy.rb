@@ -16,7 +16,7 @@ module Relspec
         end
       end
 
-      attr_reader :root, :diagnostics
+      attr_reader :root, :diagnostics, :library
 
       def self.build(library, spec_file)
         new(library, spec_file)

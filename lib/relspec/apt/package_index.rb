@@ -1,0 +1,50 @@
+# frozen_string_literal: true
+
+require_relative "packages_scanner"
+require_relative "version"
+
+module Relspec
+  module Apt
+    # The binary packages of one Packages index: for each name, its highest
+    # version with the fields the planner uses.
+    class PackageIndex
+      FIELDS = %w[Package Version Depends Provides Source Architecture].freeze
+
+      Entry = Struct.new(:name, :version, :depends, :provides, :source, :architecture, keyword_init: true)
+
+      attr_reader :entries
+
+      def self.parse(text)
+        entries = {}
+        PackagesScanner.new(text).each(FIELDS) do |stanza|
+          name = stanza["Package"]
+          version = stanza["Version"]
+          raise ArgumentError, "a stanza has no Package or Version field" unless name && version
+
+          entry = Entry.new(name: name, version: version, depends: stanza["Depends"], provides: stanza["Provides"],
+                            source: stanza["Source"]&.split&.first || name, architecture: stanza["Architecture"]).freeze
+          known = entries[name]
+          entries[name] = entry if known.nil? || Version.parse(version) > Version.parse(known.version)
+        end
+        new(entries)
+      end
+
+      def initialize(entries)
+        @entries = entries.freeze
+        freeze
+      end
+
+      def [](name)
+        entries[name]
+      end
+
+      def include?(name)
+        entries.key?(name)
+      end
+
+      def size
+        entries.size
+      end
+    end
+  end
+end

@@ -1,0 +1,144 @@
+# frozen_string_literal: true
+
+require "digest"
+require "open3"
+require "zlib"
+require "stringio"
+require_relative "fetcher"
+require_relative "cache"
+require_relative "signature"
+require_relative "release_file"
+require_relative "package_index"
+
+module Relspec
+  module Apt
+    # Reads an apt repository (a reprepro base folder or its URL): the
+    # Release file of a codename, checked against a keyring unless the
+    # repository is trusted as it is, and the Packages index of one
+    # architecture, verified against the SHA256 the Release file gives.
+    class Repository
+      # Any problem reading the repository; the message names the URL.
+      class Error < StandardError; end
+
+      COMPRESSIONS = [["Packages.xz", :xz], ["Packages.gz", :gzip], ["Packages", :none]].freeze
+
+      attr_reader :fetcher
+
+      def initialize(fetcher, keyring: nil, trusted: false, cache: Cache.new(nil))
+        @fetcher = fetcher
+        @keyring = keyring
+        @trusted = trusted
+        @cache = cache
+        @releases = {}
+      end
+
+      def url
+        fetcher.base
+      end
+
+      def release(codename)
+        @releases[codename] ||= read_release(codename)
+      end
+
+      # The Packages index of +codename+/+component+/+arch+.
+      def packages(codename, arch, component: "main")
+        release = release(codename)
+        directory = "#{component}/binary-#{arch}"
+        listed = COMPRESSIONS.map { |file, kind| ["#{directory}/#{file}", kind] }.select { |path, _| release.checksum(path) }
+        if listed.empty?
+          raise Error, "#{url}/dists/#{codename}/Release lists no #{directory}/Packages index " \
+                       "(architectures: #{release.architectures.join(' ')})"
+        end
+
+        path, kind = listed.first
+        PackageIndex.parse(decompress(index_bytes(codename, release, path), kind, "#{url}/dists/#{codename}/#{path}"))
+      rescue Deb822::ParseError, ArgumentError => e
+        raise Error, "#{url}/dists/#{codename}/#{path}: malformed index: #{e.message}"
+      end
+
+      private
+
+      def read_release(codename)
+        base = "dists/#{codename}"
+        in_release = @fetcher.fetch("#{base}/InRelease")
+        text, raw =
+          if in_release
+            [clearsigned_content(in_release, "#{url}/#{base}/InRelease"), in_release]
+          else
+            plain = @fetcher.fetch("#{base}/Release")
+            raise Error, "#{url} has no distribution #{codename} (no #{base}/InRelease or Release)" unless plain
+
+            [detached_content(plain, base), plain]
+          end
+        ReleaseFile.parse(text, raw: raw)
+      rescue Fetcher::Failure => e
+        raise Error, e.message
+      rescue Deb822::ParseError => e
+        raise Error, "#{url}/#{base}: malformed Release file: #{e.message}"
+      end
+
+      def clearsigned_content(bytes, where)
+        return Signature.unarmor(bytes) if @trusted && !@keyring
+        raise Error, "#{where} cannot be verified: no keyring given (set keyring:, or trusted: true)" unless @keyring
+
+        Signature.verify_clearsigned(bytes, @keyring).force_encoding(Encoding::UTF_8)
+      rescue Signature::Invalid => e
+        raise Error, "#{where}: signature check failed: #{e.message}"
+      end
+
+      def detached_content(content, base)
+        return content.force_encoding(Encoding::UTF_8) if @trusted && !@keyring
+        raise Error, "#{url}/#{base}/Release is unsigned: set keyring:, or trusted: true" unless @keyring
+
+        signature = @fetcher.fetch("#{base}/Release.gpg")
+        raise Error, "#{url}/#{base}/Release has no Release.gpg signature" unless signature
+
+        Signature.verify_detached(content, signature, @keyring).force_encoding(Encoding::UTF_8)
+      rescue Signature::Invalid => e
+        raise Error, "#{url}/#{base}/Release: signature check failed: #{e.message}"
+      end
+
+      def index_bytes(codename, release, path)
+        checksum = release.checksum(path)
+        cached = @fetcher.remote? ? @cache.read(release.sha256, "#{codename}/#{path}") : nil
+        return cached if cached && Digest::SHA256.hexdigest(cached) == checksum.sha256
+
+        where = "#{url}/dists/#{codename}/#{path}"
+        bytes = @fetcher.fetch("dists/#{codename}/#{path}")
+        raise Error, "#{where} is listed in the Release file but missing" unless bytes
+
+        verify(bytes, checksum, where)
+        @cache.write(release.sha256, "#{codename}/#{path}", bytes) if @fetcher.remote?
+        bytes
+      rescue Fetcher::Failure => e
+        raise Error, e.message
+      end
+
+      def verify(bytes, checksum, where)
+        return if bytes.bytesize == checksum.size && Digest::SHA256.hexdigest(bytes) == checksum.sha256
+
+        raise Error, "#{where} does not match the SHA256 of the Release file " \
+                     "(got #{bytes.bytesize} bytes, expected #{checksum.size})"
+      end
+
+      def decompress(bytes, kind, where)
+        text =
+          case kind
+          when :gzip then Zlib::GzipReader.new(StringIO.new(bytes)).read
+          when :xz then xz_decompress(bytes, where)
+          else bytes
+          end
+        text.force_encoding(Encoding::BINARY)
+      rescue Zlib::Error => e
+        raise Error, "#{where}: corrupt gzip data: #{e.message}"
+      end
+
+      def xz_decompress(bytes, where)
+        out, err, status = Open3.capture3("xz", "-dc", stdin_data: bytes, binmode: true)
+        raise Error, "#{where}: corrupt xz data: #{err.strip}" unless status.success?
+
+        out
+      end
+    end
+  end
+end

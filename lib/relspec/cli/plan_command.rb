@@ -1,0 +1,59 @@
+# frozen_string_literal: true
+
+require_relative "../plan"
+require_relative "../plan/report"
+
+module Relspec
+  module CLI
+    # `relspec plan SPEC`: what the release inherits, builds and has already
+    # published, and why. Writes the lock only with --write.
+    class PlanCommand
+      def initialize(path:, format:, write:, target:, timeout:, out:, err:)
+        @path = path
+        @format = format
+        @write = write
+        @target = target
+        @timeout = timeout
+        @out = out
+        @err = err
+      end
+
+      def call
+        result = Plan.compute(@path, timeout: @timeout)
+        plan = result.plan
+        targets = selected_targets(plan)
+        report = Plan::Report.new(plan, result.spec_digest, targets: targets)
+        @out.write(render(report))
+        write_lock(result) if @write
+        0
+      end
+
+      private
+
+      def selected_targets(plan)
+        return plan.targets.keys unless @target
+
+        wanted = Plan::Target.parse(@target)
+        found = plan.targets.keys.find { |target| target == wanted }
+        raise Error, "#{@target} is not a target of #{plan.release} (#{plan.targets.keys.join(', ')})" unless found
+
+        [found]
+      rescue ArgumentError => e
+        raise Error, e.message
+      end
+
+      def render(report)
+        case @format
+        when "json" then report.json
+        when "markdown" then report.markdown
+        else report.text
+        end
+      end
+
+      def write_lock(result)
+        changed = Plan::Lock.write(result.lock_path, result.plan, result.spec_digest)
+        @err.puts(changed ? "wrote #{result.lock_path}" : "#{result.lock_path} is up to date")
+      end
+    end
+  end
+end

@@ -1,0 +1,29 @@
+# frozen_string_literal: true
+
+module Relspec
+  module Debian
+    # Debian package names of a release, compatible with the existing Rock
+    # releases (DESIGN §5): `rock-master-20.06-base-types`,
+    # `rock-master-20.06-ruby-tools-orocos.rb`, `rock-master-20.06-meta-rock.core`.
+    module Naming
+      module_function
+
+      # `/` and `_` become `-`, then lowercase; dots stay.
+      def canonical(package_name)
+        package_name.tr("/_", "--").downcase
+      end
+
+      # The name package +package_name+ (of +build_type+) has in release
+      # +release+ whose Debian names start with +prefix+.
+      def deb_name(prefix:, release:, package_name:, build_type:)
+        kind =
+          case build_type
+          when "ruby", "gem" then "ruby-"
+          when "meta" then "meta-"
+          else ""
+          end
+        "#{prefix}-#{release}-#{kind}#{canonical(package_name)}"
+      end
+    end
+  end
+end

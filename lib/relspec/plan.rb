@@ -1,0 +1,55 @@
+# frozen_string_literal: true
+
+require_relative "spec"
+require_relative "catalog/release_catalog"
+require_relative "plan/target"
+require_relative "plan/ancestor"
+require_relative "plan/inventory"
+require_relative "plan/planner"
+require_relative "plan/lock"
+
+module Relspec
+  # The release plan (DESIGN §3, §4): for every target and package, inherit,
+  # build or published, with causes; recorded in releases/<r>/lock.yml.
+  module Plan
+    # Everything one planning run produced.
+    Result = Struct.new(:resolution, :plan, :lock_path, :spec_digest, keyword_init: true) do
+      def lock_text
+        Lock.dump(plan, spec_digest)
+      end
+    end
+
+    # Plans the release of the spec at +path+. The project root (where
+    # releases/ lives) is the folder above the spec's folder. +timeout+ is the
+    # HTTP timeout in seconds; +cache_dir+ holds downloaded indices (nil: none).
+    def self.compute(path, timeout: 10, cache_dir: Apt::Cache.default_dir)
+      resolution = Spec.resolve(path)
+      effective = resolution.effective
+      release_catalog = Catalog::ReleaseCatalog.load(resolution)
+      cache = Apt::Cache.new(cache_dir)
+      fetcher_options = { timeout: timeout }
+      ancestors = Ancestors.of(resolution, fetcher_options: fetcher_options, cache: cache)
+      targets = Target.all(effective)
+      inventory = Inventory.read(ancestors, targets)
+      own = read_own(resolution, targets, fetcher_options, cache)
+      lock_path = Lock.path(File.dirname(File.dirname(path)), effective.release)
+      planner = Planner.new(release_catalog: release_catalog, effective: effective, spec_file: resolution.spec_file,
+                            ancestors: ancestors, inventory: inventory, own: own, revisions: Lock.revisions(lock_path))
+      Result.new(resolution: resolution, plan: planner.plan, lock_path: lock_path,
+                 spec_digest: Lock.spec_digest(effective))
+    end
+
+    def self.read_own(resolution, targets, fetcher_options, cache)
+      entry = resolution.effective["repository"]
+      return OwnRepository.read(nil, targets) unless entry
+
+      spec_file = resolution.spec_file
+      repository = Ancestors.reader(entry, File.dirname(spec_file.path), fetcher_options, cache)
+      OwnRepository.read(repository, targets)
+    rescue Apt::Repository::Error => e
+      raise InvalidInput, [Diagnostic.error("own-repository", "the repository of #{resolution.effective.release}: #{e.message}",
+                                            location: spec_file.key_location(["repository"]))]
+    end
+    private_class_method :read_own
+  end
+end

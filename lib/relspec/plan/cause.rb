@@ -1,0 +1,65 @@
+# frozen_string_literal: true
+
+module Relspec
+  module Plan
+    # Why a package is built in this release. Causes chain: a package rebuilt
+    # because one of its dependencies is rebuilt carries that dependency's
+    # cause, so every rebuild can be traced to a spec entry or a fact about
+    # the ancestors.
+    class Cause
+      attr_reader :kind, :detail, :because
+
+      def self.missing
+        new(:missing, nil, nil)
+      end
+
+      def self.no_ancestor_target(target)
+        new(:no_ancestor_target, target.to_s, nil)
+      end
+
+      def self.blacklisted(match, reason)
+        new(:blacklisted, reason ? "\"#{match}\" (#{reason})" : "\"#{match}\"", nil)
+      end
+
+      def self.pinned(commit, ref)
+        new(:pinned, ref ? "#{commit} (#{ref})" : commit.to_s, nil)
+      end
+
+      def self.depends_on(package, cause)
+        new(:depends_on, package, cause)
+      end
+
+      def initialize(kind, detail, because)
+        @kind = kind
+        @detail = detail
+        @because = because
+        freeze
+      end
+
+      # How many dependency steps lead to the original cause.
+      def depth
+        because ? 1 + because.depth : 0
+      end
+
+      # The original cause at the end of the chain.
+      def root
+        because ? because.root : self
+      end
+
+      def to_s
+        case kind
+        when :missing then "missing in all ancestors"
+        when :no_ancestor_target then "no ancestor has target #{detail}"
+        when :blacklisted then "blacklisted by #{detail}"
+        when :pinned then "pinned to #{detail}"
+        when :depends_on then "depends on #{detail}, which is rebuilt because #{because}"
+        end
+      end
+
+      # One line per step, for the lock file and `relspec why`.
+      def chain
+        kind == :depends_on ? ["depends on #{detail}", *because.chain] : [to_s]
+      end
+    end
+  end
+end

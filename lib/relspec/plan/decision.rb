@@ -1,0 +1,30 @@
+# frozen_string_literal: true
+
+module Relspec
+  module Plan
+    # What happens to one package on one target:
+    # - inherit: an ancestor's repository has it (+ancestor+, its +deb_name+ and +version+);
+    # - build: it is built here (+deb_name+, +version+, +cause+);
+    # - published: it was built here already and the release's repository holds it.
+    Decision = Struct.new(:package, :kind, :deb_name, :version, :ancestor, :cause, keyword_init: true) do
+      def inherit?
+        kind == :inherit
+      end
+
+      def build?
+        kind == :build
+      end
+
+      def published?
+        kind == :published
+      end
+
+      def to_h
+        entry = { "decision" => kind.to_s, "deb" => deb_name, "version" => version }
+        entry["from"] = ancestor if ancestor
+        entry["causes"] = cause.chain if cause
+        entry
+      end
+    end
+  end
+end

@@ -1,0 +1,86 @@
+# frozen_string_literal: true
+
+require "digest"
+require "fileutils"
+require "json"
+require_relative "../yaml/writer"
+require_relative "../yaml/located_document"
+require_relative "../atomic_file"
+
+module Relspec
+  module Plan
+    # releases/<release>/lock.yml (DESIGN §6): what a plan decided and what it
+    # read to decide it. Deterministic: keys sorted, no timestamps, no host
+    # paths; writing the same plan twice gives the same bytes. Lock files are
+    # the reviewable record of a release, so `relspec diff` compares them.
+    module Lock
+      FORMAT_KEY = "relspec_lock"
+      FORMAT_VERSION = 1
+
+      module_function
+
+      def path(root, release)
+        root == "." ? File.join("releases", release, "lock.yml") : File.join(root, "releases", release, "lock.yml")
+      end
+
+      def to_h(plan, spec_digest)
+        {
+          FORMAT_KEY => FORMAT_VERSION, "release" => plan.release, "spec_digest" => spec_digest,
+          "ancestors" => ancestors(plan), "packages" => plan.packages.sort.to_h,
+          "targets" => plan.targets.sort_by { |target, _| target.to_s }.to_h do |target, decisions|
+            [target.to_s, decisions.sort.to_h { |name, decision| [name, decision.to_h] }]
+          end,
+          "warnings" => plan.warnings.map(&:message), "notes" => plan.notes
+        }
+      end
+
+      def dump(plan, spec_digest)
+        Yaml::Writer.dump(to_h(plan, spec_digest))
+      end
+
+      def write(path, plan, spec_digest)
+        FileUtils.mkdir_p(File.dirname(path))
+        text = dump(plan, spec_digest)
+        return false if File.file?(path) && File.binread(path) == text
+
+        AtomicFile.write(path, text)
+        true
+      end
+
+      def ancestors(plan)
+        plan.release_digests.keys.map(&:first).uniq.sort.to_h do |name|
+          digests = plan.release_digests.select { |(ancestor, _), _| ancestor == name }
+          [name, digests.map { |(_, codename), digest| [codename, digest] }.sort.to_h]
+        end
+      end
+
+      # The digest of what the spec means (its effective values), so a lock
+      # records which spec it was planned from.
+      def spec_digest(effective)
+        Digest::SHA256.hexdigest(JSON.generate(effective.to_h))
+      end
+
+      # package => {upstream version => revision} from an existing lock, so
+      # that a package keeps its revision from plan to plan.
+      def revisions(path)
+        return {} unless File.file?(path)
+
+        document = Yaml::LocatedDocument.load(path)
+        data = document.data
+        return {} unless document.ok? && data.is_a?(Hash) && data[FORMAT_KEY] == FORMAT_VERSION
+
+        revisions = Hash.new { |hash, key| hash[key] = {} }
+        data.fetch("targets", {}).each_value do |decisions|
+          decisions.each do |name, decision|
+            next if decision["decision"] == "inherit"
+
+            version = decision["version"].to_s
+            upstream, revision = version.match(/\A(.*)-(\d+)~[a-z0-9-]+\z/)&.captures
+            revisions[name][upstream] = [revisions[name][upstream].to_i, revision.to_i].max if upstream
+          end
+        end
+        revisions
+      end
+    end
+  end
+end

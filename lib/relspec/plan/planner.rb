@@ -1,0 +1,220 @@
+# frozen_string_literal: true
+
+require_relative "cause"
+require_relative "decision"
+require_relative "release_plan"
+require_relative "../apt/version"
+require_relative "../debian/naming"
+require_relative "../debian/package_version"
+require_relative "../spec/package_pattern"
+require_relative "../diagnostic"
+require_relative "../error"
+
+module Relspec
+  module Plan
+    # Decides, for every target and every package of the release, whether it
+    # is inherited from an ancestor, already published here, or built here,
+    # and why (DESIGN §4, §5):
+    #
+    # - a package is built when it is blacklisted, pinned to a commit no
+    #   ancestor has, missing in all ancestors, or when no ancestor has the
+    #   target at all;
+    # - everything that depends on a rebuilt package is rebuilt too, because
+    #   an inherited binary must never run against a different build of its
+    #   dependency;
+    # - the nearest ancestor (in search order) that has the package's Debian
+    #   name provides it.
+    class Planner
+      # +release_catalog+: Catalog::ReleaseCatalog; +effective+: the
+      # release's EffectiveSpec; +spec_file+: its SpecFile (for locations);
+      # +ancestors+: Plan::Ancestor in search order; +inventory+: Inventory;
+      # +own+: OwnRepository; +revisions+: package => {upstream => revision}
+      # remembered by the previous lock.
+      def initialize(release_catalog:, effective:, spec_file:, ancestors:, inventory:, own:, revisions: {})
+        @catalog = release_catalog.catalog
+        @selections = release_catalog.selections
+        @effective = effective
+        @spec_file = spec_file
+        @ancestors = ancestors
+        @inventory = inventory
+        @own = own
+        @revisions = revisions
+        @warnings = []
+        @notes = []
+      end
+
+      def plan
+        blacklist = blacklist_patterns
+        targets = Target.all(@effective)
+        decisions = targets.to_h { |target| [target, plan_target(target, blacklist)] }
+        ReleasePlan.new(release: @effective.release, targets: decisions, packages: package_records(decisions),
+                        release_digests: @inventory.release_digests, warnings: merged_warnings, notes: @notes.uniq.sort)
+      end
+
+      private
+
+      def plan_target(target, blacklist)
+        selection = @selections.fetch(target.codename)
+        names = selection.names
+        providers = names.to_h { |name| [name, providers_of(@catalog.package(name), target)] }
+        causes = names.to_h { |name| [name, direct_cause(@catalog.package(name), target, providers[name], blacklist)] }.compact
+        rebuild_dependents(names, causes)
+        names.to_h { |name| [name, decide(@catalog.package(name), target, providers[name], causes[name])] }
+      end
+
+      # [[ancestor, index entry], …] in search order.
+      def providers_of(package, target)
+        @ancestors.filter_map do |ancestor|
+          index = @inventory.index(ancestor.name, target)
+          entry = index && index[deb_name(package, ancestor.package_prefix, ancestor.name)]
+          entry && [ancestor, entry]
+        end
+      end
+
+      def direct_cause(package, target, providers, blacklist)
+        entry = blacklist.find { |pattern, _reason, _index| pattern.match?(package.name) }
+        return Cause.blacklisted(entry[0].source, entry[1]) if entry
+
+        pinned = pin_cause(package, providers)
+        return pinned if pinned
+        return Cause.missing if @ancestors.empty?
+        return Cause.no_ancestor_target(target) if @ancestors.none? { |a| @inventory.target?(a.name, target) }
+        return Cause.missing if providers.empty?
+
+        nil
+      end
+
+      def pin_cause(package, providers)
+        pin = (@effective["pins"] || {})[package.name]
+        return nil unless pin
+
+        ref, value = pin.first
+        label = ref == "commit" ? nil : "#{ref} #{value}"
+        ours = upstream(package)
+        nearest = providers.first
+        return nil if nearest && ours && Debian::PackageVersion.upstream_of(nearest[1].version) == ours
+
+        Cause.pinned(package.vcs.commit || value, label)
+      end
+
+      # Breadth first from the rebuilt packages along reverse dependencies,
+      # so each package gets the shortest chain (ties broken by name).
+      def rebuild_dependents(names, causes)
+        selected = names.to_h { |name| [name, true] }
+        dependents = Hash.new { |hash, key| hash[key] = [] }
+        names.each do |name|
+          package = @catalog.package(name)
+          (package.dependencies + package.optional_dependencies).each do |dependency|
+            dependents[dependency] << name if selected[dependency]
+          end
+        end
+        frontier = causes.keys.sort
+        until frontier.empty?
+          reached = []
+          frontier.each do |dependency|
+            dependents[dependency].sort.each do |dependent|
+              next if causes.key?(dependent)
+
+              causes[dependent] = Cause.depends_on(dependency, causes[dependency])
+              reached << dependent
+            end
+          end
+          frontier = reached.sort
+        end
+      end
+
+      def decide(package, target, providers, cause)
+        if cause
+          built(package, target, cause)
+        else
+          ancestor, entry = providers.first
+          note_shadowing(package, target, providers)
+          note_drift(package, ancestor, entry)
+          Decision.new(package: package.name, kind: :inherit, deb_name: entry.name, version: entry.version,
+                       ancestor: ancestor.name).freeze
+        end
+      end
+
+      def built(package, target, cause)
+        deb = deb_name(package, @effective["package_prefix"], @effective.release)
+        upstream = upstream(package)
+        unless upstream
+          raise InvalidInput, [Diagnostic.error("unknown-commit-time",
+                                                "cannot version #{package.name}: the time of its commit is unknown",
+                                                location: @spec_file.location(["workspace"]),
+                                                hint: "plan from the workspace rather than a snapshot for pins by tag or branch")]
+        end
+        version = Debian::PackageVersion.full(upstream, revision(package, upstream), target.codename)
+        kind = @own.version_of(deb, target) == version ? :published : :build
+        Decision.new(package: package.name, kind: kind, deb_name: deb, version: version, cause: cause).freeze
+      end
+
+      def revision(package, upstream)
+        @revisions.dig(package.name, upstream) || 1
+      end
+
+      def upstream(package)
+        Debian::PackageVersion.upstream(package.version, package.commit_time)
+      end
+
+      def deb_name(package, prefix, release)
+        Debian::Naming.deb_name(prefix: prefix, release: release, package_name: package.name,
+                                build_type: package.build_type)
+      end
+
+      def note_shadowing(package, target, providers)
+        return if providers.size < 2
+
+        @warnings << [package.name, providers.map { |ancestor, _| ancestor.name }, target.to_s]
+      end
+
+      def note_drift(package, ancestor, entry)
+        theirs = Debian::PackageVersion.upstream_of(entry.version)
+        ours = upstream(package)
+        return unless theirs && ours && Apt::Version.parse(ours) > Apt::Version.parse(theirs)
+
+        @notes << "drift: #{package.name} is at #{ours} in the workspace, #{ancestor.name} has #{theirs}"
+      end
+
+      # One warning per shadowed package, listing the targets.
+      def merged_warnings
+        @warnings.group_by { |name, providers, _| [name, providers] }.sort.map do |(name, providers), entries|
+          targets = entries.map(&:last).uniq.sort.join(", ")
+          Diagnostic.warning("shadowed-package",
+                             "#{name} is provided by #{providers.join(' and ')} (#{targets}); " \
+                             "#{providers.first} is nearer and wins",
+                             location: @spec_file.location(["parent"]),
+                             hint: "blacklist it to rebuild it here, or remove it from the farther release")
+        end
+      end
+
+      # [pattern, reason, index] for each blacklist entry; an entry that
+      # matches no package of the workspace is an error.
+      def blacklist_patterns
+        entries = (@effective["blacklist"] || []).each_with_index.map do |entry, index|
+          [Spec::PackagePattern.parse(entry["match"]), entry["reason"], index]
+        end
+        unmatched = entries.reject { |pattern, _, _| @catalog.packages.keys.any? { |name| pattern.match?(name) } }
+        unless unmatched.empty?
+          raise InvalidInput, unmatched.map { |pattern, _, index|
+            Diagnostic.error("unmatched-blacklist", "blacklist entry #{pattern.source.inspect} matches no package " \
+                                                    "of the workspace",
+                             location: @spec_file.location(["blacklist", index]),
+                             hint: "check the name, or remove the entry")
+          }
+        end
+        entries
+      end
+
+      def package_records(decisions)
+        names = decisions.values.flat_map(&:keys).uniq.sort
+        names.to_h do |name|
+          package = @catalog.package(name)
+          vcs = package.vcs
+          [name, { "url" => vcs.url, "commit" => vcs.commit, "commit_time" => package.commit_time,
+                   "version" => upstream(package), "tag" => vcs.tag, "branch" => vcs.branch }.compact]
+        end
+      end
+    end
+  end
+end
