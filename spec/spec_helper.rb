@@ -6,6 +6,9 @@ require "tmpdir"
 require_relative "support/cli_runner"
 require_relative "support/spec_writer"
 require_relative "support/workspace_helpers"
+require_relative "support/apt_repository_builder"
+require_relative "support/http_server"
+require_relative "support/release_file_editor"
 
 RSpec.configure do |config|
   config.expect_with(:rspec) { |c| c.syntax = :expect }

@@ -14,12 +14,21 @@ module Relspec
 
       attr_reader :entries
 
+      # Raises Deb822::ParseError (with a line number) or ArgumentError.
+      #
+      # The fast scanner reads only the wanted fields; a stanza without
+      # Package or Version means the text is not what it seems, and the full
+      # parser is run to say where. (Lines the scanner never looks at are not
+      # checked: indices are verified against a signed Release file.)
       def self.parse(text)
         entries = {}
         PackagesScanner.new(text).each(FIELDS) do |stanza|
           name = stanza["Package"]
           version = stanza["Version"]
-          raise ArgumentError, "a stanza has no Package or Version field" unless name && version
+          unless name && version
+            Deb822.parse(text)
+            raise ArgumentError, "a stanza has no Package or Version field"
+          end
 
           entry = Entry.new(name: name, version: version, depends: stanza["Depends"], provides: stanza["Provides"],
                             source: stanza["Source"]&.split&.first || name, architecture: stanza["Architecture"]).freeze

@@ -49,8 +49,7 @@ module Relspec
       def pinned(package, pin)
         ref, value = pin.first
         vcs = package.vcs.pinned(pin)
-        return package.with(vcs: vcs.pinned("commit" => value), commit_time: nil) if @root.nil? && ref == "commit"
-        return package.with(vcs: vcs, commit_time: nil) if @root.nil?
+        return from_snapshot(package, vcs, ref, value) if @root.nil?
 
         commit, time = GitState.resolve(File.join(@root, package.source_dir), ref, value)
         unless commit
@@ -59,6 +58,19 @@ module Relspec
           return package
         end
         package.with(vcs: vcs.pinned("commit" => commit), commit_time: time)
+      end
+
+      # Without checkouts only a pin on the commit the snapshot recorded keeps
+      # its commit time.
+      def from_snapshot(package, vcs, ref, value)
+        current = package.vcs.commit
+        if ref == "commit" && current&.start_with?(value)
+          package.with(vcs: vcs.pinned("commit" => current))
+        elsif ref == "commit"
+          package.with(vcs: vcs.pinned("commit" => value), commit_time: nil)
+        else
+          package.with(vcs: vcs, commit_time: nil)
+        end
       end
 
       def unknown(name)

@@ -1,0 +1,138 @@
+# frozen_string_literal: true
+
+require "spec_helper"
+require "zlib"
+require "relspec/apt/repository"
+
+# Reads real reprepro repositories, from disk and over HTTP.
+RSpec.describe Relspec::Apt::Repository do
+  around do |example|
+    Dir.mktmpdir("relspec-apt") do |dir|
+      @dir = dir
+      example.run
+    ensure
+      @server&.stop
+    end
+  end
+
+  def build_repository(**options)
+    path = File.join(@dir, "repo")
+    builder = AptRepositoryBuilder.new(path, codenames: %w[bionic buster], architectures: %w[amd64 arm64], **options)
+    builder.add("rock-x-base-types", "1.0.20200601.103000-1~bionic", codename: "bionic", arch: "amd64",
+                                                                      depends: "rock-x-base-cmake (>= 1.0)", source: "rock-x-base-types")
+    builder.add("rock-x-base-cmake", "1.0.20200504.080000-1~bionic", codename: "bionic", arch: "amd64", provides: "rock-cmake")
+    builder.add("rock-x-data", "3.0-1~buster", codename: "buster", arch: "all")
+    path
+  end
+
+  def reader(location, **options)
+    described_class.new(Relspec::Apt::Fetcher.new(location, timeout: options.delete(:timeout) || 5), **options)
+  end
+
+  def serve(path)
+    @server = HttpServer.new(path)
+  end
+
+  def error_of
+    yield
+    raise "expected an error"
+  rescue described_class::Error => e
+    e.message
+  end
+
+  it "reads the packages of each codename and architecture from disk" do
+    repository = reader(build_repository, trusted: true)
+    index = repository.packages("bionic", "amd64")
+    expect(index.entries.keys.sort).to eq(%w[rock-x-base-cmake rock-x-base-types])
+    expect(index["rock-x-base-types"].to_h).to include(version: "1.0.20200601.103000-1~bionic",
+                                                       depends: "rock-x-base-cmake (>= 1.0)", source: "rock-x-base-types")
+    expect(index["rock-x-base-cmake"].provides).to eq("rock-cmake")
+    expect(repository.packages("buster", "arm64").entries.keys).to eq(["rock-x-data"])
+    expect(repository.release("bionic").sha256)
+      .to eq(Digest::SHA256.file(File.join(@dir, "repo", "dists", "bionic", "Release")).hexdigest)
+  end
+
+  it "reads the same over HTTP, and only the Release file once the indices are cached" do
+    path = build_repository
+    serve(path)
+    cache = Relspec::Apt::Cache.new(File.join(@dir, "cache"))
+    first = reader(@server.url, trusted: true, cache: cache).packages("bionic", "amd64")
+    expect(first.entries).to eq(reader(path, trusted: true).packages("bionic", "amd64").entries)
+    fetched_before = @server.requests.dup
+    reader(@server.url, trusted: true, cache: cache).packages("bionic", "amd64")
+    second = @server.requests.drop(fetched_before.size)
+    expect(fetched_before.grep(/Packages/)).not_to be_empty
+    expect(second.grep(/Packages/)).to be_empty
+    expect(second).to include("/dists/bionic/Release")
+  end
+
+  it "verifies InRelease with a keyring, and refuses a bad signature or a foreign key" do
+    home = File.join(@dir, "gnupg")
+    Dir.mkdir(home, 0o700)
+    system({ "GNUPGHOME" => home }, "gpg", "--batch", "--quiet", "--passphrase", "", "--quick-gen-key",
+           "Test Repo <repo@example.org>", "ed25519", "sign", "never", exception: true, err: File::NULL)
+    keyring = File.join(@dir, "keyring.gpg")
+    File.binwrite(keyring, IO.popen({ "GNUPGHOME" => home }, %w[gpg --export], &:read))
+    path = build_repository(sign_with: "yes", gnupg_home: home)
+    expect(reader(path, keyring: keyring).packages("bionic", "amd64").size).to eq(2)
+
+    in_release = File.join(path, "dists", "bionic", "InRelease")
+    File.write(in_release, File.read(in_release).sub("Codename: bionic", "Codename: bionix"))
+    expect(error_of { reader(path, keyring: keyring).release("bionic") }).to match(/InRelease: signature check failed: BAD signature/)
+    expect(error_of { reader(path, keyring: File.join(CliRunner::ROOT, "Gemfile")).release("buster") })
+      .to match(/signature check failed/)
+    expect(error_of { reader(path).release("buster") }).to match(/no keyring given \(set keyring:, or trusted: true\)/)
+  end
+
+  it "refuses an unsigned repository unless it is trusted" do
+    expect(error_of { reader(build_repository).release("bionic") })
+      .to match(%r{repo/dists/bionic/Release is unsigned: set keyring:, or trusted: true})
+  end
+
+  it "refuses an index whose SHA256 does not match the Release file" do
+    path = build_repository
+    File.binwrite(File.join(path, "dists", "bionic", "main", "binary-amd64", "Packages.gz"), Zlib.gzip("Package: evil\n"))
+    expect(error_of { reader(path, trusted: true).packages("bionic", "amd64") })
+      .to match(%r{repo/dists/bionic/main/binary-amd64/Packages.gz does not match the SHA256 of the Release file})
+  end
+
+  it "refuses a truncated .gz index" do
+    path = build_repository
+    gz = File.binread(File.join(path, "dists", "bionic", "main", "binary-amd64", "Packages.gz"))
+    ReleaseFileEditor.replace_index(path, "bionic", "main/binary-amd64/Packages.gz", gz[0, gz.size / 2])
+    expect(error_of { reader(path, trusted: true).packages("bionic", "amd64") })
+      .to match(%r{binary-amd64/Packages.gz: corrupt gzip data})
+  end
+
+  it "refuses a malformed stanza with its line" do
+    path = build_repository
+    ReleaseFileEditor.keep_only(path, "bionic", "main/binary-amd64", "main/binary-amd64/Packages")
+    ReleaseFileEditor.replace_index(path, "bionic", "main/binary-amd64/Packages", "Package: a\nVersion: 1\n\nnot a field\nVersion: 2\n")
+    expect(error_of { reader(path, trusted: true).packages("bionic", "amd64") })
+      .to match(%r{binary-amd64/Packages: malformed index: line 4: expected "Field: value"})
+  end
+
+  it "says which codename is missing" do
+    expect(error_of { reader(build_repository, trusted: true).release("focal") })
+      .to match(%r{repo has no distribution focal \(no dists/focal/InRelease or Release\)})
+  end
+
+  it "treats HTTP 404 as missing and gives up on HTTP 500 after bounded retries" do
+    serve(build_repository)
+    @server.fail(%r{/dists/bionic/}, 404)
+    expect(error_of { reader(@server.url, trusted: true).release("bionic") }).to include("#{@server.url} has no distribution bionic")
+    @server.fail(%r{/dists/buster/}, 500)
+    message = error_of { reader(@server.url, trusted: true).release("buster") }
+    expect(message).to eq("#{@server.url}/dists/buster/InRelease: HTTP 500 Internal Server Error (after 3 attempts)")
+    expect(@server.requests.count("/dists/buster/InRelease")).to eq(3)
+  end
+
+  it "gives up on a server that stalls, after the timeout" do
+    serve(build_repository)
+    @server.fail(%r{/dists/bionic/InRelease}, :stall, seconds: 3)
+    started = Process.clock_gettime(Process::CLOCK_MONOTONIC)
+    message = error_of { described_class.new(Relspec::Apt::Fetcher.new(@server.url, timeout: 0.3, retries: 2), trusted: true).release("bionic") }
+    expect(message).to eq("#{@server.url}/dists/bionic/InRelease: no answer within 0.3 s (after 2 attempts)")
+    expect(Process.clock_gettime(Process::CLOCK_MONOTONIC) - started).to be < 3
+  end
+end

@@ -1,0 +1,55 @@
+# frozen_string_literal: true
+
+require "webrick"
+require "logger"
+
+# A real HTTP server on 127.0.0.1 serving a folder, for repositories read
+# over the network. Paths can be made to answer 404 or 500, or to stall, and
+# every request is counted.
+class HttpServer
+  attr_reader :requests
+
+  def initialize(root)
+    @root = root
+    @requests = []
+    @faults = {}
+    @server = WEBrick::HTTPServer.new(BindAddress: "127.0.0.1", Port: 0, DocumentRoot: root,
+                                      Logger: WEBrick::Log.new(File::NULL), AccessLog: [])
+    @server.mount_proc("/") { |request, response| serve(request, response) }
+    @thread = Thread.new { @server.start }
+  end
+
+  def url
+    "http://127.0.0.1:#{@server.config[:Port]}"
+  end
+
+  # +fault+: 404, 500 or :stall (no answer for +seconds+), for paths matching +pattern+.
+  def fail(pattern, fault, seconds: 5)
+    @faults[pattern] = [fault, seconds]
+  end
+
+  def stop
+    @server.shutdown
+    @thread.join(5)
+  end
+
+  private
+
+  def serve(request, response)
+    path = request.path
+    @requests << path
+    fault, seconds = @faults.find { |pattern, _| pattern.match?(path) }&.last
+    case fault
+    when 404, 500 then response.status = fault
+    when :stall then sleep(seconds)
+    end
+    return if fault
+
+    file = File.join(@root, path)
+    if File.file?(file)
+      response.body = File.binread(file)
+    else
+      response.status = 404
+    end
+  end
+end
