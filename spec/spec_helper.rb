@@ -9,6 +9,7 @@ require_relative "support/workspace_helpers"
 require_relative "support/apt_repository_builder"
 require_relative "support/http_server"
 require_relative "support/release_file_editor"
+require_relative "support/release_fixture"
 
 RSpec.configure do |config|
   config.expect_with(:rspec) { |c| c.syntax = :expect }

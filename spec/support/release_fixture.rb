@@ -1,0 +1,57 @@
+# frozen_string_literal: true
+
+require "relspec/catalog/snapshot_source"
+require "relspec/catalog/autoproj_source"
+require "relspec/debian/naming"
+require "relspec/debian/package_version"
+
+# A release hierarchy for plan tests: the demo workspace as a catalog
+# snapshot, specs written into specs/, and ancestor repositories built with
+# reprepro holding stand-in packages named and versioned as relspec would.
+class ReleaseFixture
+  attr_reader :root, :catalog
+
+  def initialize(root)
+    @root = root
+    builder = DemoWorkspace.build(File.join(root, "ws"))
+    @catalog = Relspec::Catalog::AutoprojSource.load(builder.root, Relspec::Spec::Distributions::BUILTIN.slice("bionic", "buster", "focal"))
+    File.write(File.join(root, "catalog.yml"), Relspec::Catalog::SnapshotSource.dump(@catalog))
+    FileUtils.mkdir_p(File.join(root, "specs"))
+  end
+
+  def spec(name, yaml)
+    File.write(File.join(root, "specs", "#{name}.yml"), "release: #{name}\nworkspace: ../catalog.yml\n#{yaml}")
+    "specs/#{name}.yml"
+  end
+
+  # The version relspec gives +package+ on +codename+ (revision 1), or the
+  # one an ancestor built from an older commit (+commit_time+).
+  def version(package, codename, commit_time: nil)
+    entry = @catalog.package(package)
+    upstream = Relspec::Debian::PackageVersion.upstream(entry.version, commit_time || entry.commit_time)
+    Relspec::Debian::PackageVersion.full(upstream, 1, codename)
+  end
+
+  def deb(release, package)
+    Relspec::Debian::Naming.deb_name(prefix: "rock", release: release, package_name: package,
+                                     build_type: @catalog.package(package).build_type)
+  end
+
+  # A reprepro repository in repos/<release> holding +packages+ (name =>
+  # options) for every target given.
+  def repository(release, targets, packages)
+    path = File.join(root, "repos", release)
+    codenames = targets.map(&:first).uniq
+    builder = AptRepositoryBuilder.new(path, codenames: codenames, architectures: targets.map(&:last).uniq)
+    targets.group_by(&:first).each do |codename, pairs|
+      debs = pairs.flat_map do |_, arch|
+        packages.map do |package, options|
+          { name: deb(release, package), arch: arch,
+            version: options[:version] || version(package, codename, commit_time: options[:commit_time]) }
+        end
+      end
+      builder.add_many(debs, codename: codename)
+    end
+    path
+  end
+end
