@@ -5,7 +5,8 @@ require "logger"
 
 # A real HTTP server on 127.0.0.1 serving a folder, for repositories read
 # over the network. Paths can be made to answer 404 or 500, or to stall, and
-# every request is counted.
+# every request is counted. The folder is also served below any first path
+# segment (/x/dists/… is /dists/…), so one server can play several hosts.
 class HttpServer
   attr_reader :requests
 
@@ -45,7 +46,7 @@ class HttpServer
     end
     return if fault
 
-    file = File.join(@root, path)
+    file = File.join(@root, path.sub(%r{\A/[^/]+/(?=dists/)}, "/"))
     if File.file?(file)
       response.body = File.binread(file)
     else
