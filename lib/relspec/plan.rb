@@ -13,7 +13,7 @@ module Relspec
   # build or published, with causes; recorded in releases/<r>/lock.yml.
   module Plan
     # Everything one planning run produced.
-    Result = Struct.new(:resolution, :plan, :lock_path, :spec_digest, keyword_init: true) do
+    Result = Struct.new(:resolution, :plan, :lock_path, :spec_digest, :own, keyword_init: true) do
       def lock_text
         Lock.dump(plan, spec_digest)
       end
@@ -36,7 +36,7 @@ module Relspec
       planner = Planner.new(release_catalog: release_catalog, effective: effective, spec_file: resolution.spec_file,
                             ancestors: ancestors, inventory: inventory, own: own, revisions: Lock.revisions(lock_path))
       Result.new(resolution: resolution, plan: planner.plan, lock_path: lock_path,
-                 spec_digest: Lock.spec_digest(effective))
+                 spec_digest: Lock.spec_digest(effective), own: own)
     end
 
     def self.read_own(resolution, targets, fetcher_options, cache)
@@ -44,6 +44,9 @@ module Relspec
       return OwnRepository.read(nil, targets) unless entry
 
       spec_file = resolution.spec_file
+      # The release publishes into its path: a path that does not exist yet
+      # is an empty repository, never a reason to ask the URL.
+      entry = entry.except("url") if entry["path"]
       repository = Ancestors.reader(entry, File.dirname(spec_file.path), fetcher_options, cache)
       OwnRepository.read(repository, targets)
     rescue Apt::Repository::Error => e

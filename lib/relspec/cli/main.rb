@@ -3,6 +3,7 @@
 require "thor"
 require_relative "../version"
 require_relative "catalog_commands"
+require_relative "osdeps_commands"
 
 module Relspec
   module CLI
@@ -81,6 +82,17 @@ module Relspec
 
       desc "catalog SUBCOMMAND", "The package database of a workspace (export, show)"
       subcommand "catalog", CatalogCommands
+
+      desc "osdeps SUBCOMMAND", "osdeps files for autoproj (render SPEC, index, select); `osdeps SPEC` renders"
+      subcommand "osdeps", OsdepsCommands
+
+      # `relspec osdeps SPEC` is `relspec osdeps render SPEC`.
+      def self.normalize(argv)
+        return argv unless argv[0] == "osdeps" && argv[1] && !argv[1].start_with?("-")
+        return argv if OsdepsCommands.all_commands.key?(argv[1]) || argv[1] == "help"
+
+        [argv[0], "render", *argv[1..]]
+      end
 
       private
 

@@ -14,8 +14,13 @@ module Relspec
         type == "ubuntu" ? "ubuntu,debian" : "debian"
       end
 
+      # The labels an osdeps entry is keyed by. "default" is left out: autoproj
+      # adds "default" to every system's versions, so an entry keyed with it
+      # would also resolve on distributions the release does not target, and
+      # on Debian both the "ubuntu,debian" and the "debian" entry would match,
+      # giving two names when a package differs between the two.
       def osdeps_labels_key
-        labels.join(",")
+        (labels - ["default"]).join(",")
       end
     end
 

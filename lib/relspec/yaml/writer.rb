@@ -13,7 +13,7 @@ module Relspec
     # Psych.dump does the same job about ten times slower, which shows on
     # catalogs and locks of thousands of packages.
     module Writer
-      PLAIN = %r{\A[A-Za-z0-9_/$][A-Za-z0-9_./+\-@$]*\z}
+      PLAIN = %r{\A[A-Za-z0-9_/$][A-Za-z0-9_./+\-@$,:]*\z}
 
       module_function
 
@@ -67,7 +67,7 @@ module Relspec
       end
 
       def plain?(text)
-        return false unless PLAIN.match?(text)
+        return false unless PLAIN.match?(text) && !text.end_with?(":")
 
         SCANNER.tokenize(text) == text
       rescue Psych::DisallowedClass

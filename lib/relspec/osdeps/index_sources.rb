@@ -1,0 +1,51 @@
+# frozen_string_literal: true
+
+require "open3"
+require "zlib"
+require_relative "../apt/repository"
+require_relative "../apt/package_index"
+require_relative "../diagnostic"
+require_relative "../error"
+
+module Relspec
+  module Osdeps
+    # The Packages indices `osdeps select` computes reverse dependencies
+    # from: Packages files (plain, .gz, .xz, or apt's .lz4 lists) or apt
+    # repository URLs read for the user's codename and architecture.
+    module IndexSources
+      module_function
+
+      def load(sources, codename:, arch:, trusted:, keyring:)
+        sources.map do |source|
+          if source.match?(%r{\Ahttps?://})
+            repository = Apt::Repository.new(Apt::Fetcher.new(source), trusted: trusted, keyring: keyring)
+            repository.packages(codename, arch)
+          else
+            Apt::PackageIndex.parse(read_file(source))
+          end
+        rescue Apt::Repository::Error, Apt::Deb822::ParseError, ArgumentError, SystemCallError => e
+          raise InvalidInput, [Diagnostic.error("index", "cannot read the index #{source}: #{e.message}",
+                                                location: Location.file_only(source))]
+        end
+      end
+
+      def read_file(path)
+        bytes = File.binread(path)
+        case path
+        when /\.gz\z/ then Zlib.gunzip(bytes)
+        when /\.xz\z/ then decompress("xz", bytes)
+        when /\.lz4\z/ then decompress("lz4cat", bytes)
+        else bytes
+        end.b
+      end
+
+      def decompress(tool, bytes)
+        command = tool == "xz" ? %w[xz -dc] : [tool]
+        out, err, status = Open3.capture3(*command, stdin_data: bytes, binmode: true)
+        raise ArgumentError, "#{tool}: #{err.strip}" unless status.success?
+
+        out
+      end
+    end
+  end
+end
