@@ -1,5 +1,7 @@
 # frozen_string_literal: true
 
+require_relative "native"
+
 module Relspec
   module Apt
     # Control-file syntax (deb822(5)): stanzas of "Field: value" lines
@@ -16,27 +18,50 @@ module Relspec
         end
       end
 
-      # One stanza: fields in file order (field names as written) and the
-      # line it starts on.
-      Stanza = Struct.new(:fields, :line) do
-        def [](name)
-          fields[name]
-        end
-      end
 
       module_function
 
-      # Every stanza with every field. Raises ParseError.
+      # Every stanza as a Hash of its fields in file order (names as written,
+      # values in UTF-8). Raises ParseError.
       def parse(text)
+        parse_with_lines(text).first
+      end
+
+      # Yields each stanza's fields and the line it starts on, without
+      # keeping them (for reading large indices once).
+      def each(text, &block)
+        return enum_for(:each, text) unless block
+
+        if NativeReader.available?
+          Native.parse(text, &block)
+        else
+          stanzas, lines = parse_in_ruby(text)
+          stanzas.each_with_index { |fields, index| yield fields, lines[index] }
+        end
+      end
+
+      # [stanzas, lines]: the stanzas and the line each one starts on.
+      def parse_with_lines(text)
+        NativeReader.available? ? Native.parse(text) : parse_in_ruby(text)
+      end
+
+      # The same as parse_with_lines, in Ruby (used when the C reader is not
+      # compiled).
+      def parse_in_ruby(text)
+        text = text.dup.force_encoding(Encoding::UTF_8)
         text = text.delete("\r") if text.include?("\r")
         stanzas = []
+        lines = []
         fields = nil
         first_line = nil
         last = nil
         text.split("\n", -1).each_with_index do |line, index|
           first = line.getbyte(0)
           if first.nil? || (first <= 32 && line.strip.empty?)
-            stanzas << Stanza.new(fields, first_line) if fields
+            if fields
+              stanzas << fields
+              lines << first_line
+            end
             fields = nil
             last = nil
           elsif first == 35 # "#"
@@ -63,8 +88,11 @@ module Relspec
             last = name
           end
         end
-        stanzas << Stanza.new(fields, first_line) if fields
-        stanzas
+        if fields
+          stanzas << fields
+          lines << first_line
+        end
+        [stanzas, lines]
       end
     end
   end

@@ -10,7 +10,7 @@ module Relspec
     class PackageIndex
       FIELDS = %w[Package Version Depends Provides Source Architecture].freeze
 
-      Entry = Struct.new(:name, :version, :depends, :provides, :source, :architecture, keyword_init: true)
+      Entry = Struct.new(:name, :version, :depends, :provides, :source, :architecture)
 
       attr_reader :entries
 
@@ -30,10 +30,13 @@ module Relspec
             raise ArgumentError, "a stanza has no Package or Version field"
           end
 
-          entry = Entry.new(name: name, version: version, depends: stanza["Depends"], provides: stanza["Provides"],
-                            source: stanza["Source"]&.split&.first || name, architecture: stanza["Architecture"]).freeze
           known = entries[name]
-          entries[name] = entry if known.nil? || Version.parse(version) > Version.parse(known.version)
+          next if known && Version.parse(version) <= Version.parse(known.version)
+
+          source = stanza["Source"]
+          source = source ? source[/\A\S+/] : name
+          entries[name] = Entry.new(name, version, stanza["Depends"], stanza["Provides"], source,
+                                    stanza["Architecture"]).freeze
         end
         new(entries)
       end

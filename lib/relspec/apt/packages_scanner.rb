@@ -16,8 +16,16 @@ module Relspec
       end
 
       # Yields one Hash per stanza holding the wanted fields that it has.
-      def each(fields)
+      def each(fields, &block)
         return enum_for(:each, fields) unless block_given?
+        return Native.scan(@text, fields).first.each(&block) if NativeReader.available?
+
+        each_in_ruby(fields, &block)
+      end
+
+      # The same, in Ruby (used when the C reader is not compiled).
+      def each_in_ruby(fields)
+        return enum_for(:each_in_ruby, fields) unless block_given?
         return each_slow(fields) { |stanza| yield stanza } if @text.include?("\r") || @text.match?(/^#/)
 
         needles = fields.map { |field| "\n#{field}: ".b }
@@ -61,7 +69,7 @@ module Relspec
 
       def line_value(text, from, stop)
         ends = text.index("\n", from) || text.bytesize
-        value = text.byteslice(from, ends - from)
+        value = text.byteslice(from, ends - from).force_encoding(Encoding::UTF_8)
         # continuation lines (rare in Packages, but legal)
         while ends < stop && (text.getbyte(ends + 1) == 32 || text.getbyte(ends + 1) == 9)
           following = text.index("\n", ends + 1) || text.bytesize
@@ -72,7 +80,7 @@ module Relspec
       end
 
       def each_slow(fields)
-        Deb822.parse(@text).each { |stanza| yield stanza.fields.slice(*fields) }
+        Deb822.parse_in_ruby(@text).first.each { |stanza| yield stanza.slice(*fields) }
       end
     end
   end

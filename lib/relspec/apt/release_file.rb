@@ -19,7 +19,7 @@ module Relspec
         stanza = Deb822.parse(text).first
         raise Deb822::ParseError.new("the Release file is empty", 1) unless stanza
 
-        new(stanza.fields, Digest::SHA256.hexdigest(raw))
+        new(stanza, Digest::SHA256.hexdigest(raw))
       end
 
       def initialize(fields, sha256)

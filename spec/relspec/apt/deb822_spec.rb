@@ -7,14 +7,14 @@ require "relspec/apt/packages_scanner"
 RSpec.describe Relspec::Apt::Deb822 do
   it "reads stanzas, continuation lines and comments, with the line each starts on" do
     text = "# a comment\nPackage: a\nDescription: short\n long\n .\n more\n\n\nPackage: b\nVersion: 1\n"
-    stanzas = described_class.parse(text)
-    expect(stanzas.map(&:fields)).to eq([{ "Package" => "a", "Description" => "short\n long\n .\n more" },
-                                         { "Package" => "b", "Version" => "1" }])
-    expect(stanzas.map(&:line)).to eq([2, 9])
+    stanzas, lines = described_class.parse_with_lines(text)
+    expect(stanzas).to eq([{ "Package" => "a", "Description" => "short\n long\n .\n more" },
+                           { "Package" => "b", "Version" => "1" }])
+    expect(lines).to eq([2, 9])
   end
 
   it "accepts CRLF line ends" do
-    expect(described_class.parse("A: 1\r\nB: 2\r\n\r\nC: 3\r\n").map(&:fields)).to eq([{ "A" => "1", "B" => "2" }, { "C" => "3" }])
+    expect(described_class.parse("A: 1\r\nB: 2\r\n\r\nC: 3\r\n")).to eq([{ "A" => "1", "B" => "2" }, { "C" => "3" }])
   end
 
   {
@@ -25,7 +25,32 @@ RSpec.describe Relspec::Apt::Deb822 do
   }.each do |text, message|
     it "refuses #{text.lines.first.strip.inspect} with its line number" do
       expect { described_class.parse(text) }.to raise_error(Relspec::Apt::Deb822::ParseError, message)
+      expect { described_class.parse_in_ruby(text) }.to raise_error(Relspec::Apt::Deb822::ParseError, message)
     end
+  end
+
+  it "is read by the C reader, compiled by bin/setup" do
+    expect(Relspec::Apt::NativeReader.available?).to be(true)
+  end
+
+  it "reads the same in C and in Ruby: values, lines, continuations, comments, CRLF, UTF-8" do
+    random = Random.new(7)
+    text = Array.new(3000) do |i|
+      lines = ["Package: p#{i}", "Version: 1.#{i}", "Maintainer: Gürkan #{i} <g@example.org>"]
+      lines << "Description: short #{i}  \n long\n .\n\tmore" if random.rand(2).zero?
+      lines << "Depends: a,\n b (>= 1)" if random.rand(3).zero?
+      lines << "# a comment" if random.rand(10).zero?
+      lines << "X-Empty:" if random.rand(10).zero?
+      lines.shuffle(random: random).join(random.rand(8).zero? ? "\r\n" : "\n")
+    end.join("\n\n \t\n")
+    expect(Relspec::Apt::Native.parse(text.b)).to eq(described_class.parse_in_ruby(text.b))
+    scanner = Relspec::Apt::PackagesScanner.new(text.b)
+    fields = %w[Package Version Depends Description]
+    expect(scanner.each(fields).to_a).to eq(described_class.parse(text.b).map { |stanza| stanza.slice(*fields) })
+    yielded = []
+    described_class.each(text.b) { |stanza, line| yielded << [stanza, line] }
+    stanzas, lines = described_class.parse_in_ruby(text.b)
+    expect(yielded).to eq(stanzas.zip(lines))
   end
 end
 
@@ -49,7 +74,7 @@ RSpec.describe Relspec::Apt::PackagesScanner do
 
   it "gives the same fields as the full parser" do
     text = generated(2000)
-    full = Relspec::Apt::Deb822.parse(text).map { |stanza| stanza.fields.slice(*fields) }
+    full = Relspec::Apt::Deb822.parse(text).map { |stanza| stanza.slice(*fields) }
     expect(described_class.new(text.b).each(fields).to_a).to eq(full)
   end
 
