@@ -118,6 +118,12 @@ static VALUE walk(VALUE text, VALUE wanted, int strict)
                     snprintf(message, sizeof(message), "expected \"Field: value\", found %s", StringValueCStr(inspected));
                     raise_parse_error(message, number);
                 }
+                /* still a stanza: one without the wanted fields tells the
+                 * caller to look closer (with the strict parser) */
+                if (NIL_P(fields)) {
+                    fields = rb_hash_new();
+                    first_line = number;
+                }
                 last = Qnil;
             } else {
                 if (NIL_P(fields)) {
