@@ -13,7 +13,8 @@ module Relspec
   # build or published, with causes; recorded in releases/<r>/lock.yml.
   module Plan
     # Everything one planning run produced.
-    Result = Struct.new(:resolution, :plan, :lock_path, :spec_digest, :own, keyword_init: true) do
+    Result = Struct.new(:resolution, :plan, :lock_path, :spec_digest, :own, :release_catalog, :ancestors,
+                        keyword_init: true) do
       def lock_text
         Lock.dump(plan, spec_digest)
       end
@@ -36,7 +37,8 @@ module Relspec
       planner = Planner.new(release_catalog: release_catalog, effective: effective, spec_file: resolution.spec_file,
                             ancestors: ancestors, inventory: inventory, own: own, revisions: Lock.revisions(lock_path))
       Result.new(resolution: resolution, plan: planner.plan, lock_path: lock_path,
-                 spec_digest: Lock.spec_digest(effective), own: own)
+                 spec_digest: Lock.spec_digest(effective), own: own, release_catalog: release_catalog,
+                 ancestors: ancestors)
     end
 
     def self.read_own(resolution, targets, fetcher_options, cache)

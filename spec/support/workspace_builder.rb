@@ -148,16 +148,18 @@ class WorkspaceBuilder
     dir = repository(package.name)
     FileUtils.mkdir_p(dir)
     git(dir, "init", "-q")
+    files = { "manifest.xml" => package.manifest || manifest_xml(package) }.merge(package.files)
     package.history.each_with_index do |commit, index|
+      # earlier commits hold the package too (a pin on them must build)
+      files.each { |path, content| write(File.join(dir, path), content) }
       write(File.join(dir, "HISTORY"), "change #{index + 1}\n")
       git(dir, "add", "-A")
       git(dir, "commit", "-q", "-m", "Change #{index + 1}", date: commit.fetch(:date))
       git(dir, "tag", commit[:tag]) if commit[:tag]
     end
-    files = { "manifest.xml" => package.manifest || manifest_xml(package) }.merge(package.files)
     files.each { |path, content| write(File.join(dir, path), content) }
     git(dir, "add", "-A")
-    git(dir, "commit", "-q", "-m", "Import #{package.name}", date: package.date)
+    git(dir, "commit", "-q", "--allow-empty", "-m", "Import #{package.name}", date: package.date)
     git(dir, "tag", package.tag) if package.tag
   end
 

@@ -71,6 +71,23 @@ module Relspec
                                timeout: options[:timeout], out: $stdout, err: $stderr).call
       end
 
+      desc "compile SPEC", "Emit the Debian source packages the release must build, plan.yml, lock and osdeps"
+      long_desc <<~TEXT
+        Plans the release, then writes one Debian source package (.orig.tar.gz,
+        .debian.tar.xz, .dsc) per build decision into
+        <out>/<release>/<codename>-<arch>/<source>/, plan.yml per target (the builds
+        in dependency order), releases/<release>/lock.yml and the osdeps files. A
+        compile with nothing changed writes nothing.
+      TEXT
+      option :out, type: :string, default: "build", desc: "Where the source packages go"
+      option :jobs, type: :numeric, default: 2, desc: "Packages emitted in parallel"
+      option :timeout, type: :numeric, default: 10, desc: "HTTP timeout in seconds"
+      def compile(path)
+        require_relative "compile_command"
+        finish CompileCommand.new(path: path, out: options[:out], jobs: options[:jobs], timeout: options[:timeout],
+                                  out_io: $stdout).call
+      end
+
       desc "why SPEC PACKAGE", "Explain one package's decision, with its full cause chain"
       option :target, type: :string, desc: "Only this target (codename/arch)"
       option :timeout, type: :numeric, default: 10, desc: "HTTP timeout in seconds"

@@ -8,7 +8,8 @@ module Relspec
     # Debian names, its apt repository and the targets it was built for
     # (nil: unknown, every target is tried, as for external releases without
     # `targets:`). +location+ says where its repository is declared.
-    Ancestor = Struct.new(:name, :package_prefix, :repository, :targets, :location, keyword_init: true) do
+    Ancestor = Struct.new(:name, :package_prefix, :repository, :targets, :location, :install_prefix, :separate_prefixes,
+                          keyword_init: true) do
       def target?(target)
         targets.nil? || Array(targets[target.codename]).include?(target.arch)
       end
@@ -37,14 +38,17 @@ module Relspec
         location = spec_file.key_location(repository ? ["repository"] : ["release"])
         Ancestor.new(name: effective.release, package_prefix: effective["package_prefix"],
                      repository: repository && reader(repository, File.dirname(spec_file.path), fetcher_options, cache),
-                     targets: effective.targets, location: location).freeze
+                     targets: effective.targets, location: location, install_prefix: effective["install_prefix"],
+                     separate_prefixes: effective["separate_prefixes"] != false).freeze
       end
 
       def external(release, fetcher_options, cache)
         entry = %w[path url keyring trusted].to_h { |key| [key, release.value(key)] }.compact
         Ancestor.new(name: release.name, package_prefix: release.value("package_prefix") || "rock",
                      repository: reader(entry, File.dirname(release.declared_in.path), fetcher_options, cache),
-                     targets: release.value("targets"), location: release.location).freeze
+                     targets: release.value("targets"), location: release.location,
+                     install_prefix: release.value("install_prefix") || "/opt/rock",
+                     separate_prefixes: release.value("separate_prefixes") != false).freeze
       end
 
       # A repository entry ({path, url, keyring, trusted}) as a reader; the

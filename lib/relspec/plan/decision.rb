@@ -6,7 +6,8 @@ module Relspec
     # - inherit: an ancestor's repository has it (+ancestor+, its +deb_name+ and +version+);
     # - build: it is built here (+deb_name+, +version+, +cause+);
     # - published: it was built here already and the release's repository holds it.
-    Decision = Struct.new(:package, :kind, :deb_name, :version, :ancestor, :cause, keyword_init: true) do
+    # +debian_digest+ (builds, once compiled): the digest of the generated debian/.
+    Decision = Struct.new(:package, :kind, :deb_name, :version, :ancestor, :cause, :debian_digest, keyword_init: true) do
       def inherit?
         kind == :inherit
       end
@@ -23,6 +24,7 @@ module Relspec
         entry = { "decision" => kind.to_s, "deb" => deb_name, "version" => version }
         entry["from"] = ancestor if ancestor
         entry["causes"] = cause.chain if cause
+        entry["debian_digest"] = debian_digest if debian_digest
         entry
       end
     end

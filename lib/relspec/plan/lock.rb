@@ -60,14 +60,30 @@ module Relspec
         Digest::SHA256.hexdigest(JSON.generate(effective.to_h))
       end
 
-      # package => {upstream version => revision} from an existing lock, so
-      # that a package keeps its revision from plan to plan.
-      def revisions(path)
-        return {} unless File.file?(path)
+      # "codename/arch" => {package => {"version", "debian_digest"}} of the
+      # builds an existing lock records.
+      def builds(path)
+        data = read(path)
+        return {} unless data
+
+        data.fetch("targets", {}).transform_values do |decisions|
+          decisions.reject { |_, decision| decision["decision"] == "inherit" }
+        end
+      end
+
+      def read(path)
+        return nil unless File.file?(path)
 
         document = Yaml::LocatedDocument.load(path)
         data = document.data
-        return {} unless document.ok? && data.is_a?(Hash) && data[FORMAT_KEY] == FORMAT_VERSION
+        document.ok? && data.is_a?(Hash) && data[FORMAT_KEY] == FORMAT_VERSION ? data : nil
+      end
+
+      # package => {upstream version => revision} from an existing lock, so
+      # that a package keeps its revision from plan to plan.
+      def revisions(path)
+        data = read(path)
+        return {} unless data
 
         revisions = Hash.new { |hash, key| hash[key] = {} }
         data.fetch("targets", {}).each_value do |decisions|

@@ -1,0 +1,31 @@
+# frozen_string_literal: true
+
+require_relative "../compile"
+
+module Relspec
+  module CLI
+    # `relspec compile SPEC`: the source packages of everything the release
+    # builds, plan.yml per target, the lock and the osdeps files.
+    class CompileCommand
+      def initialize(path:, out:, jobs:, timeout:, out_io:)
+        @path = path
+        @out = out
+        @jobs = jobs
+        @timeout = timeout
+        @io = out_io
+      end
+
+      def call
+        result = Compile.run(@path, out: @out, jobs: @jobs, timeout: @timeout)
+        if result.written.empty? && !result.lock_changed && result.osdeps_written.zero?
+          @io.puts("#{result.release}: nothing changed (#{result.unchanged.size} source packages up to date)")
+        else
+          result.written.each { |dir| @io.puts("wrote #{dir}") }
+          @io.puts("#{result.release}: #{result.written.size} source packages written, #{result.unchanged.size} unchanged, " \
+                   "#{result.published.size} already published; #{result.lock_changed ? 'wrote' : 'kept'} #{result.lock_path}")
+        end
+        0
+      end
+    end
+  end
+end

@@ -1,0 +1,170 @@
+# frozen_string_literal: true
+
+require "erb"
+require "digest"
+require_relative "naming"
+require_relative "../yaml/writer"
+
+module Relspec
+  module Debian
+    # The debian/ folder of one package built in a release, from ERB
+    # templates per build type (debhelper compat 13, 3.0 (quilt)).
+    #
+    # Inputs (a Hash, see BuildInput in emitter.rb): the catalog Package, its
+    # Debian name and version, the target codename, the release's settings,
+    # the Debian names and versions of its dependencies on this target, and its
+    # OS dependencies resolved for the codename.
+    class DebianDir
+      TEMPLATES = File.join(__dir__, "templates")
+      SECTIONS = { "ruby" => "ruby", "import" => "misc", "archive" => "misc" }.freeze
+      ARCH_INDEPENDENT = %w[ruby import archive].freeze
+      DH_OPTIONS = { "cmake" => " --buildsystem=cmake", "orogen" => " --buildsystem=cmake",
+                     "autotools" => " --buildsystem=autoconf" }.freeze
+      BUILD_TOOLS = { "cmake" => ["cmake"], "orogen" => ["cmake"], "autotools" => %w[autoconf automake libtool],
+                      "ruby" => ["ruby"], "import" => [], "archive" => [] }.freeze
+
+      # +revision+ stays a placeholder when computing the digest of debian/,
+      # which must not depend on the revision it decides.
+      def self.render(input, revision:)
+        new(input).render(revision)
+      end
+
+      def initialize(input)
+        @in = input
+      end
+
+      # {relative path => [content, mode]}
+      def render(revision)
+        files = {
+          "control" => template("control.erb"),
+          "changelog" => template("changelog.erb", version: full_version(revision)),
+          "copyright" => template("copyright.erb"),
+          "rules" => template("rules.erb", body: template("rules_#{rules_kind}.erb")),
+          "source/format" => "3.0 (quilt)\n",
+          "env.sh" => template("env.sh.erb"),
+          "env.yml" => Yaml::Writer.dump(environment),
+          "#{source}.lintian-overrides" => "# packages of a release live in /opt by design\n" \
+                                           "#{source}: dir-or-file-in-opt [#{install_dir.delete_prefix('/')}/*]\n"
+        }
+        files.to_h { |path, content| [path, [content, path == "rules" ? 0o755 : 0o644]] }
+      end
+
+      # What debian/ is made of, independent of the revision: when it changes
+      # for the same upstream version, the revision goes up.
+      def self.digest(files)
+        Digest::SHA256.hexdigest(files.sort.map { |path, (content, mode)| "#{path}\0#{mode}\0#{content}" }.join("\0"))
+      end
+
+      private
+
+      def template(name, **locals)
+        ERB.new(File.read(File.join(TEMPLATES, name)), trim_mode: "-").result_with_hash(variables.merge(locals))
+      end
+
+      def variables
+        package = @in.fetch(:package)
+        {
+          source: source, section: SECTIONS.fetch(package.build_type, "devel"), maintainer: @in.fetch(:maintainer),
+          build_depends: build_depends, depends: depends, homepage: homepage, architecture: architecture,
+          synopsis: synopsis, long_description: long_description, codename: @in.fetch(:codename),
+          release: @in.fetch(:release), package_name: package.name, vcs_url: package.vcs.url.to_s,
+          vcs_ref: vcs_ref(package.vcs), commit: package.vcs.commit.to_s, date: changelog_date,
+          copyright_holder: package.maintainer || @in.fetch(:maintainer), license: package.license || "unknown",
+          build_type: package.build_type, install_dir: install_dir, dh_options: DH_OPTIONS.fetch(package.build_type, ""),
+          canonical: Naming.canonical(package.name), dependency_dirs: @in.fetch(:dependencies).map { |dep| dep[:install_dir] }
+        }
+      end
+
+      def source
+        @in.fetch(:deb_name)
+      end
+
+      def install_dir
+        @in.fetch(:install_dir)
+      end
+
+      def rules_kind
+        kind = @in.fetch(:package).build_type
+        kind == "archive" ? "import" : kind
+      end
+
+      def full_version(revision)
+        "#{@in.fetch(:upstream)}-#{revision}~#{@in.fetch(:codename)}"
+      end
+
+      def architecture
+        ARCH_INDEPENDENT.include?(@in.fetch(:package).build_type) ? "all" : "any"
+      end
+
+      # build-essential is implied for every build (and Policy forbids listing it).
+      IMPLIED = %w[build-essential].freeze
+
+      def relations
+        own = @in.fetch(:dependencies).map { |dep| "#{dep[:deb_name]} (>= #{dep[:version]})" }
+        own + (@in.fetch(:apt) - IMPLIED) + @in.fetch(:gems)
+      end
+
+      def build_depends
+        tools = BUILD_TOOLS.fetch(@in.fetch(:package).build_type, [])
+        (["debhelper-compat (= 13)"] + tools + relations).uniq
+      end
+
+      # Build tools autoproj adds as OS dependencies of every cmake or
+      # autotools package; a built package does not need them to run.
+      BUILD_ONLY = %w[cmake autoconf automake libtool pkg-config].freeze
+
+      def depends
+        base = architecture == "any" ? ["${shlibs:Depends}", "${misc:Depends}"] : ["${misc:Depends}"]
+        base += ["ruby"] if @in.fetch(:package).build_type == "ruby"
+        (base + (relations - BUILD_ONLY)).uniq
+      end
+
+      def homepage
+        url = @in.fetch(:package).vcs.url.to_s
+        url.match?(%r{\Ahttps?://}) ? url.delete_suffix(".git") : nil
+      end
+
+      def synopsis
+        text = @in.fetch(:package).summary || @in.fetch(:package).description || @in.fetch(:package).name
+        text = text.lines.first.strip.delete_suffix(".")
+        text = "#{@in.fetch(:package).name} of release #{@in.fetch(:release)}" if text.empty?
+        text.length > 78 ? "#{text[0, 75]}..." : text
+      end
+
+      # Description paragraphs as debian/control wants them: one leading
+      # space, "." for empty lines.
+      def long_description
+        text = @in.fetch(:package).description || synopsis
+        lines = text.strip.lines.map(&:rstrip)
+        lines += ["", "Built from #{@in.fetch(:package).name} for release #{@in.fetch(:release)}."]
+        lines.map { |line| line.empty? ? " ." : " #{line}" }.join("\n")
+      end
+
+      def vcs_ref(vcs)
+        if vcs.tag then "tag #{vcs.tag}, "
+        elsif vcs.branch then "branch #{vcs.branch}, "
+        else ""
+        end
+      end
+
+      # RFC 2822 date of the commit (never the time of the run).
+      def changelog_date
+        time = @in.fetch(:package).commit_time
+        Time.utc(*time.scan(/\d+/).map(&:to_i)).strftime("%a, %d %b %Y %H:%M:%S +0000")
+      end
+
+      def environment
+        dir = install_dir
+        {
+          "package" => @in.fetch(:package).name, "release" => @in.fetch(:release), "prefix" => dir,
+          "dependencies" => @in.fetch(:dependencies).map { |dep| dep[:install_dir] },
+          "prepend" => {
+            "PATH" => ["#{dir}/bin"], "LD_LIBRARY_PATH" => ["#{dir}/lib"],
+            "PKG_CONFIG_PATH" => ["#{dir}/lib/pkgconfig", "#{dir}/share/pkgconfig"], "CMAKE_PREFIX_PATH" => [dir],
+            "RUBYLIB" => ["#{dir}/lib"], "GEM_PATH" => ["#{dir}/lib/ruby/gems"]
+          }
+        }
+      end
+    end
+  end
+end

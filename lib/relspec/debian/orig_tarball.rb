@@ -1,0 +1,57 @@
+# frozen_string_literal: true
+
+require "open3"
+
+module Relspec
+  module Debian
+    # The upstream tarball of a package (<source>_<upstream>.orig.tar.gz),
+    # byte-identical for the same commit on every run and for every
+    # distribution, because a repository must never receive two different
+    # files under one name.
+    #
+    # Git checkouts: `git archive` of the commit (files in tree order, mtime =
+    # commit time, uid/gid 0, modes 0644/0755, nothing untracked: no VCS or
+    # build folders) piped through `gzip -n` (no name, no time stamp). Other
+    # sources: GNU tar with the same normalisation (--sort=name, --mtime,
+    # --owner=0 --group=0 --numeric-owner, --mode, --exclude-vcs), paths over
+    # 256 bytes in GNU long-name records.
+    module OrigTarball
+      # Raised when the tarball cannot be made.
+      class Failure < StandardError; end
+
+      module_function
+
+      def file_name(source, upstream)
+        "#{source}_#{upstream}.orig.tar.gz"
+      end
+
+      # Writes the tarball of +checkout+ at +commit+ (nil: the tree as it is,
+      # dated +mtime+, a Time) to +path+, with everything under +prefix+/.
+      def write(path, checkout:, commit:, prefix:, mtime:)
+        command =
+          if commit && File.exist?(File.join(checkout, ".git"))
+            ["git", "-C", checkout, "-c", "tar.umask=0022", "archive", "--format=tar", "--prefix=#{prefix}/", commit]
+          else
+            tar_command(checkout, prefix, mtime)
+          end
+        pipe(command, path)
+      end
+
+      def tar_command(dir, prefix, mtime)
+        ["tar", "--sort=name", "--format=gnu", "--mtime=@#{mtime.to_i}", "--owner=0", "--group=0", "--numeric-owner",
+         "--mode=u+rwX,go+rX,go-w", "--exclude-vcs", "--exclude=./build", "--exclude=./_build",
+         "--transform=s,^\\.,#{prefix},", "-C", dir, "-cf", "-", "."]
+      end
+
+      # Writes +command+'s output through `gzip -n` to +path+.
+      def pipe(command, path)
+        File.open(path, "wb") do |out|
+          statuses = Open3.pipeline(command, %w[gzip -n -c], out: out, err: File::NULL)
+          raise Failure, "#{command.first} failed making #{File.basename(path)}" unless statuses.all?(&:success?)
+        end
+      rescue SystemCallError => e
+        raise Failure, "cannot write #{path}: #{e.message}"
+      end
+    end
+  end
+end
