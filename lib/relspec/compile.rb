@@ -32,6 +32,7 @@ module Relspec
       @planned = Plan.compute(@path, timeout: @timeout)
       @effective = @planned.resolution.effective
       require_maintainer
+      require_workspace
       @catalog = @planned.release_catalog.catalog
       @previous = Plan::Lock.builds(@planned.lock_path)
       @project_root = File.dirname(File.dirname(@path))
@@ -52,6 +53,16 @@ module Relspec
       raise InvalidInput, [Diagnostic.error("missing-maintainer", "release #{@effective.release} names no maintainer",
                                             location: @planned.resolution.spec_file.location(["release"]),
                                             hint: "add `maintainer: Name <address>` (or inherit it from a parent)")]
+    end
+
+    def require_workspace
+      workspace = @planned.release_catalog.workspace
+      return unless Catalog::SnapshotSource.snapshot?(workspace)
+
+      raise InvalidInput, [Diagnostic.error("snapshot-workspace",
+                                            "compile needs the package checkouts, but #{workspace} is a catalog snapshot",
+                                            location: @planned.resolution.spec_file.location(["workspace"]),
+                                            hint: "point `workspace:` at the autoproj workspace to compile")]
     end
 
     # Decides final versions target by target, dependencies first, and lists

@@ -9,18 +9,20 @@ require "relspec/debian/package_version"
 # snapshot, specs written into specs/, and ancestor repositories built with
 # reprepro holding stand-in packages named and versioned as relspec would.
 class ReleaseFixture
-  attr_reader :root, :catalog
+  attr_reader :root, :catalog, :builder
 
   def initialize(root)
     @root = root
-    builder = DemoWorkspace.build(File.join(root, "ws"))
+    @builder = builder = DemoWorkspace.build(File.join(root, "ws"))
     @catalog = Relspec::Catalog::AutoprojSource.load(builder.root, Relspec::Spec::Distributions::BUILTIN.slice("bionic", "buster", "focal"))
     File.write(File.join(root, "catalog.yml"), Relspec::Catalog::SnapshotSource.dump(@catalog))
     FileUtils.mkdir_p(File.join(root, "specs"))
   end
 
-  def spec(name, yaml)
-    File.write(File.join(root, "specs", "#{name}.yml"), "release: #{name}\nworkspace: ../catalog.yml\n#{yaml}")
+  # +workspace+: :snapshot (catalog.yml) or :checkouts (the workspace itself)
+  def spec(name, yaml, workspace: :snapshot)
+    path = workspace == :snapshot ? "../catalog.yml" : "../ws/workspace"
+    File.write(File.join(root, "specs", "#{name}.yml"), "release: #{name}\nworkspace: #{path}\n#{yaml}")
     "specs/#{name}.yml"
   end
 

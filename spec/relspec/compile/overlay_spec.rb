@@ -1,0 +1,86 @@
+# frozen_string_literal: true
+
+require "spec_helper"
+
+# Overlays and incremental compiles: changing one package regenerates only
+# it, with the next revision.
+RSpec.describe "relspec compile with overlays" do
+  ALL = %w[base/cmake base/logging base/types data/models drivers/iodrivers_base tools/legacy tools/orocos.rb].freeze
+
+  around do |example|
+    Dir.mktmpdir("relspec-overlay") do |dir|
+      @dir = dir
+      @fixture = ReleaseFixture.new(dir)
+      @fixture.repository("parent", [%w[bionic amd64]], ALL.to_h { |name| [name, {}] })
+      @fixture.spec("parent", "targets: { bionic: [amd64] }\nrepository: { path: ../repos/parent, trusted: true }\n" \
+                              "maintainer: Demo Packaging <demo@example.org>\n")
+      @fixture.spec("child", "parent: parent\nblacklist: [{ match: base/types, reason: new API }]\n", workspace: :checkouts)
+      example.run
+    end
+  end
+
+  def compile
+    relspec("compile", "specs/child.yml", "--out", "out", chdir: @dir)
+  end
+
+  def overlay(package, path, content)
+    file = File.join(@dir, "overlays", package, path)
+    FileUtils.mkdir_p(File.dirname(file))
+    File.write(file, content)
+  end
+
+  def orocos_dir
+    File.join(@dir, "out", "child", "bionic-amd64", "rock-child-ruby-tools-orocos.rb")
+  end
+
+  PATCH = <<~DIFF
+    --- a/README
+    +++ b/README
+    @@ -1 +1,2 @@
+     tools/orocos.rb: part of the relspec demo workspace.
+    +patched by an overlay
+  DIFF
+
+  it "regenerates only the package whose overlay changed, with the next revision" do
+    expect(compile.exit_code).to eq(0)
+    others = Dir.glob(File.join(@dir, "out", "child", "bionic-amd64", "*", "*")).reject { |path| path.start_with?(orocos_dir) }
+    mtimes = others.to_h { |path| [path, File.mtime(path)] }
+    overlay("tools/orocos.rb", "files/lib/extra.rb", "PREFIX = \"@RELSPEC_INSTALL_DIR@\"\n")
+    overlay("tools/orocos.rb", "patches/01-readme.patch", PATCH)
+    overlay("tools/orocos.rb", "debian/README.Debian", "Release @RELSPEC_RELEASE@, package @RELSPEC_PACKAGE@.\n")
+    run = compile
+    expect(run.exit_code).to eq(0), run.stderr
+    expect(run.stdout.lines.grep(/^wrote /)).to eq(["wrote out/child/bionic-amd64/rock-child-ruby-tools-orocos.rb\n"])
+    expect(others.to_h { |path| [path, File.mtime(path)] }).to eq(mtimes)
+    expect(Dir.children(orocos_dir).grep(/\.dsc\z/).first).to end_with("-2~bionic.dsc")
+
+    Dir.mktmpdir do |work|
+      output, status = Open3.capture2e("dpkg-source", "-x", Dir.glob(File.join(orocos_dir, "*.dsc")).first, "tree", chdir: work)
+      expect(status).to be_success, output
+      tree = File.join(work, "tree")
+      expect(File.read(File.join(tree, "lib", "extra.rb"))).to eq("PREFIX = \"/opt/rock/child/rock-child-ruby-tools-orocos.rb\"\n")
+      expect(File.read(File.join(tree, "README"))).to end_with("patched by an overlay\n")
+      expect(File.read(File.join(tree, "debian", "patches", "series"))).to eq("01-readme.patch\n")
+      expect(File.read(File.join(tree, "debian", "patches", "01-readme.patch"))).to start_with("Description: 01-readme.patch")
+      expect(File.read(File.join(tree, "debian", "README.Debian"))).to eq("Release child, package rock-child-ruby-tools-orocos.rb.\n")
+    end
+  end
+
+  it "names the patch and the package when a patch does not apply" do
+    overlay("tools/orocos.rb", "patches/broken.patch", PATCH.sub("tools/orocos.rb: part", "something else"))
+    run = compile
+    expect(run.exit_code).to eq(1)
+    expect(run.stderr).to include("error[source-package]: dpkg-source failed for tools/orocos.rb (rock-child-ruby-tools-orocos.rb)")
+    expect(run.stderr).to include("broken.patch")
+    expect(run.stderr).not_to match(/\.rb:\d+:in /)
+    expect(Dir.exist?(orocos_dir)).to be(false)
+  end
+
+  it "refuses links in overlays" do
+    FileUtils.mkdir_p(File.join(@dir, "overlays", "tools", "orocos.rb", "files"))
+    File.symlink("/etc/passwd", File.join(@dir, "overlays", "tools", "orocos.rb", "files", "passwd"))
+    run = compile
+    expect(run.exit_code).to eq(1)
+    expect(run.stderr).to include("error[overlay]: overlays may not contain links")
+  end
+end
