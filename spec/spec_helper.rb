@@ -11,6 +11,9 @@ require_relative "support/http_server"
 require_relative "support/release_file_editor"
 require_relative "support/release_fixture"
 
+# In-process runs cache like CLI runs do: in a folder of the test run.
+ENV["XDG_CACHE_HOME"] = CliRunner::CACHE
+
 RSpec.configure do |config|
   config.expect_with(:rspec) { |c| c.syntax = :expect }
   config.disable_monkey_patching!

@@ -99,7 +99,7 @@ module Relspec
       version = Debian::PackageVersion.full(upstream, revision, target.codename)
       kind = @planned.own.version_of(decision.deb_name, target) == version ? :published : :build
       final = Plan::Decision.new(**decision.each_pair.to_h, kind: kind, version: version, debian_digest: digest).freeze
-      job = source_package(input, version, revision, package, overlay)
+      job = source_package(input, version, revision, package, overlay, digest)
       [final, [File.join(@out, @effective.release, "#{target.codename}-#{target.arch}", decision.deb_name), job]]
     end
 
@@ -115,9 +115,9 @@ module Relspec
       recorded["debian_digest"] == digest || recorded["debian_digest"].nil? ? old_revision.to_i : old_revision.to_i + 1
     end
 
-    def source_package(input, version, revision, package, overlay)
+    def source_package(input, version, revision, package, overlay, digest)
       Debian::SourcePackage.new(
-        input: input, files: Debian::DebianDir.render(input, revision: revision), version: version,
+        input: input, files: -> { Debian::DebianDir.render(input, revision: revision) }, digest: digest, version: version,
         checkout: checkout_of(package), overlay: overlay,
         orig_cache: File.join(@out, @effective.release, ".orig"),
         substitutions: { "@RELSPEC_INSTALL_DIR@" => input[:install_dir], "@RELSPEC_RELEASE@" => @effective.release,

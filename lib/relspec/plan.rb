@@ -2,6 +2,7 @@
 
 require_relative "spec"
 require_relative "catalog/release_catalog"
+require_relative "catalog/cache"
 require_relative "plan/target"
 require_relative "plan/ancestor"
 require_relative "plan/inventory"
@@ -23,10 +24,10 @@ module Relspec
     # Plans the release of the spec at +path+. The project root (where
     # releases/ lives) is the folder above the spec's folder. +timeout+ is the
     # HTTP timeout in seconds; +cache_dir+ holds downloaded indices (nil: none).
-    def self.compute(path, timeout: 10, cache_dir: Apt::Cache.default_dir)
+    def self.compute(path, timeout: 10, cache_dir: Apt::Cache.default_dir, catalog_cache: Catalog::Cache.new)
       resolution = Spec.resolve(path)
       effective = resolution.effective
-      release_catalog = Catalog::ReleaseCatalog.load(resolution)
+      release_catalog = Catalog::ReleaseCatalog.load(resolution, cache: catalog_cache)
       cache = Apt::Cache.new(cache_dir)
       fetcher_options = { timeout: timeout }
       ancestors = Ancestors.of(resolution, fetcher_options: fetcher_options, cache: cache)

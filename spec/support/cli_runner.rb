@@ -2,6 +2,8 @@
 
 require "open3"
 require "rbconfig"
+require "tmpdir"
+require "fileutils"
 
 # Runs the real relspec executable in a child process, as a user would.
 module CliRunner
@@ -14,8 +16,13 @@ module CliRunner
     end
   end
 
+  # Caches go to a folder of the test run, never to the user's.
+  CACHE = Dir.mktmpdir("relspec-test-cache")
+  at_exit { FileUtils.rm_rf(CACHE) }
+
   def relspec(*args, chdir: ROOT)
-    stdout, stderr, status = Open3.capture3(RbConfig.ruby, EXE, *args, chdir: chdir, stdin_data: "")
+    stdout, stderr, status = Open3.capture3({ "XDG_CACHE_HOME" => CACHE }, RbConfig.ruby, EXE, *args, chdir: chdir,
+                                                                                                stdin_data: "")
     Run.new(stdout: stdout, stderr: stderr, status: status)
   end
 end

@@ -12,13 +12,14 @@ module Relspec
     class ReleaseCatalog
       attr_reader :catalog, :selections, :workspace
 
-      # +resolution+: a valid Spec::Resolution. Raises InvalidInput.
-      def self.load(resolution)
+      # +resolution+: a valid Spec::Resolution; +cache+: a Catalog::Cache
+      # for catalogs read from workspaces, or nil. Raises InvalidInput.
+      def self.load(resolution, cache: nil)
         spec_file = resolution.spec_file
         effective = resolution.effective
         workspace = workspace_path(spec_file, effective)
         distributions = effective.distributions.slice(*effective.targets.keys)
-        catalog = Source.load(workspace, distributions)
+        catalog = Source.load(workspace, distributions, cache: cache)
         root = SnapshotSource.snapshot?(workspace) ? nil : workspace
         pins = effective["pins"] || {}
         pinned = Pinning.apply(catalog, pins, root: root,

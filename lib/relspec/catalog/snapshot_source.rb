@@ -45,7 +45,7 @@ module Relspec
                     codenames: data.fetch("codenames", []))
       rescue ArgumentError, TypeError, NoMethodError, KeyError => e
         raise InvalidInput, [Diagnostic.error("catalog-format", "malformed catalog snapshot: #{e.message}",
-                                              location: document.location([]),
+                                              location: document ? document.location([]) : Location.file_only("catalog"),
                                               hint: "regenerate it with `relspec catalog export`")]
       end
     end

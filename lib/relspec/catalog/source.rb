@@ -14,14 +14,17 @@ module Relspec
 
       # +distributions+: codename => Spec::Distribution the OS dependencies
       # must be known for.
-      def load(path, distributions)
+      # +cache+: a Catalog::Cache for workspaces (nil: always load).
+      def load(path, distributions, cache: nil)
         if SnapshotSource.snapshot?(path)
           catalog = SnapshotSource.load(path)
           check_codenames(path, catalog, distributions.keys)
           catalog
         else
           require_relative "autoproj_source"
-          AutoprojSource.load(path, distributions)
+          return AutoprojSource.load(path, distributions) unless cache
+
+          cache.fetch(path, distributions) { AutoprojSource.load(path, distributions) }
         end
       end
 

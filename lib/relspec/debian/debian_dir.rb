@@ -57,8 +57,13 @@ module Relspec
 
       private
 
+      # Compiled once: compiling ERB costs more than rendering it.
+      COMPILED = Dir.glob("*.erb", base: TEMPLATES).to_h do |name|
+        [name, ERB.new(File.read(File.join(TEMPLATES, name)), trim_mode: "-").tap { |erb| erb.filename = name }]
+      end.freeze
+
       def template(name, **locals)
-        ERB.new(File.read(File.join(TEMPLATES, name)), trim_mode: "-").result_with_hash(variables.merge(locals))
+        COMPILED.fetch(name).result_with_hash((@variables ||= variables).merge(locals))
       end
 
       def variables

@@ -19,13 +19,16 @@ module Relspec
     class SourcePackage
       STAMP = ".relspec-input"
 
-      # +input+: DebianDir input; +files+: rendered debian/ files;
-      # +version+: the full version; +checkout+: the package's source folder;
+      # +input+: DebianDir input; +files+: a block rendering debian/ (called
+      # only when the package is emitted); +digest+: the digest of debian/
+      # recorded in the lock; +version+: the full version; +checkout+: the
+      # package's source folder;
       # +overlay+: its Overlay; +orig_cache+: folder where orig tarballs are
       # made once per upstream version and shared by every target.
-      def initialize(input:, files:, version:, checkout:, overlay:, orig_cache:, substitutions:)
+      def initialize(input:, files:, digest:, version:, checkout:, overlay:, orig_cache:, substitutions:)
         @input = input
-        @files = files
+        @render = files
+        @digest = digest
         @version = version
         @checkout = checkout
         @overlay = overlay
@@ -47,8 +50,7 @@ module Relspec
 
       # What the emitted files are made of; equal stamps mean equal files.
       def stamp
-        Digest::SHA256.hexdigest([@input.fetch(:package).vcs.commit, upstream, @version, DebianDir.digest(@files),
-                                  @overlay.signature].join("\0"))
+        Digest::SHA256.hexdigest([@input.fetch(:package).vcs.commit, upstream, @version, @digest].join("\0"))
       end
 
       # Writes into +dir+ unless it already holds these files. True if written.
@@ -134,7 +136,7 @@ module Relspec
 
       def write_debian(tree)
         debian = File.join(tree, "debian")
-        files = @files.merge(@overlay.debian_files(@substitutions).transform_values { |content| [content, 0o644] })
+        files = @render.call.merge(@overlay.debian_files(@substitutions).transform_values { |content| [content, 0o644] })
         files["rules"] = [files["rules"][0], 0o755]
         patches = @overlay.patches(@input.fetch(:package).name)
         patches.each { |name, content| files["patches/#{name}"] = [content, 0o644] }
