@@ -70,11 +70,20 @@ module DemoWorkspace
     builder
   end
 
+  # base/logging really needs base/cmake at build time: it looks for the
+  # file base/cmake installs, the way Rock packages find Rock's CMake macros.
+  NEEDS_BASE_CMAKE = <<~CMAKE
+    find_path(BASE_CMAKE_DIR base-cmake/README PATH_SUFFIXES share REQUIRED)
+    message(STATUS "found base/cmake in ${BASE_CMAKE_DIR}")
+  CMAKE
+
   def files_for(name, type, version)
     project = name.tr("/", "-")
     readme = { "README" => "#{name}: part of the relspec demo workspace.\n" }
+    cmake = format(CMAKE_LISTS, project: project, version: version)
+    cmake += NEEDS_BASE_CMAKE if name == "base/logging"
     case type
-    when :cmake then readme.merge("CMakeLists.txt" => format(CMAKE_LISTS, project: project, version: version))
+    when :cmake then readme.merge("CMakeLists.txt" => cmake)
     when :autotools then readme.merge("configure.ac" => "AC_INIT([#{project}], [#{version}])\nAC_OUTPUT\n")
     when :ruby then readme.merge("lib/#{File.basename(name, '.rb')}.rb" => "module Orocos\nend\n")
     else readme
