@@ -9,6 +9,9 @@ require "relspec/debian/package_version"
 # snapshot, specs written into specs/, and ancestor repositories built with
 # reprepro holding stand-in packages named and versioned as relspec would.
 class ReleaseFixture
+  # The packages the demo workspace's layout selects (with dependencies).
+  LAYOUT = %w[base/cmake base/logging base/types data/models drivers/iodrivers_base tools/legacy tools/orocos.rb].freeze
+
   attr_reader :root, :catalog, :builder
 
   def initialize(root)

@@ -6,13 +6,12 @@ require "digest"
 # `relspec compile` on the demo workspace, through the CLI, checked with the
 # real Debian tools: dpkg-source, dpkg-buildpackage, lintian.
 RSpec.describe "relspec compile" do
-  ALL = %w[base/cmake base/logging base/types data/models drivers/iodrivers_base tools/legacy tools/orocos.rb].freeze
-  BUILT = %w[base/types drivers/iodrivers_base tools/orocos.rb].freeze
+  built = %w[base/types drivers/iodrivers_base tools/orocos.rb].freeze
 
   before(:all) do
     @dir = Dir.mktmpdir("relspec-compile")
     @fixture = ReleaseFixture.new(@dir)
-    @fixture.repository("parent", [%w[bionic amd64], %w[buster amd64]], ALL.to_h { |name| [name, {}] })
+    @fixture.repository("parent", [%w[bionic amd64], %w[buster amd64]], ReleaseFixture::LAYOUT.to_h { |name| [name, {}] })
     @fixture.spec("parent", "targets: { bionic: [amd64], buster: [amd64] }\nrepository: { path: ../repos/parent, trusted: true }\n" \
                             "maintainer: Demo Packaging <demo@example.org>\n")
     @fixture.spec("child", "parent: parent\nblacklist: [{ match: base/types, reason: new API }]\n" \
@@ -39,8 +38,8 @@ RSpec.describe "relspec compile" do
     expect(@first.exit_code).to eq(0), @first.stderr
     %w[bionic-amd64 buster-amd64].each do |target|
       dirs = Dir.children(File.join(@dir, "out1", "child", target)).reject { |name| name.end_with?(".yml") }.sort
-      expect(dirs).to eq(BUILT.map { |package| @fixture.deb("child", package) }.sort)
-      BUILT.each do |package|
+      expect(dirs).to eq(built.map { |package| @fixture.deb("child", package) }.sort)
+      built.each do |package|
         files = Dir.children(package_dir("out1", target, package)).reject { |name| name.start_with?(".") }
         upstream = @fixture.version(package, "bionic").sub(/-1~bionic\z/, "")
         deb = @fixture.deb("child", package)
@@ -52,7 +51,7 @@ RSpec.describe "relspec compile" do
 
   it "emits packages that dpkg-source extracts and that build with dpkg-buildpackage" do
     Dir.mktmpdir("relspec-build") do |work|
-      BUILT.each do |package|
+      built.each do |package|
         output, status = Open3.capture2e("dpkg-source", "-x", dsc("out1", "bionic-amd64", package), chdir: work)
         expect(status).to be_success, output
       end
@@ -84,7 +83,7 @@ RSpec.describe "relspec compile" do
   end
 
   it "passes lintian without errors" do
-    dscs = BUILT.map { |package| dsc("out1", "bionic-amd64", package) }
+    dscs = built.map { |package| dsc("out1", "bionic-amd64", package) }
     output, = Open3.capture2e("lintian", "--no-tag-display-limit", *dscs)
     expect(output.lines.grep(/^E: /)).to eq([])
   end
@@ -93,7 +92,7 @@ RSpec.describe "relspec compile" do
     second = relspec("compile", "specs/child.yml", "--out", "out2", chdir: @dir)
     expect(second.exit_code).to eq(0), second.stderr
     expect(tree_digests(File.join(@dir, "out2"))).to eq(tree_digests(File.join(@dir, "out1")))
-    BUILT.each do |package|
+    built.each do |package|
       origs = %w[bionic-amd64 buster-amd64].map do |target|
         Digest::SHA256.file(Dir.glob(File.join(package_dir("out1", target, package), "*.orig.tar.gz")).first).hexdigest
       end

@@ -5,13 +5,12 @@ require "spec_helper"
 # Overlays and incremental compiles: changing one package regenerates only
 # it, with the next revision.
 RSpec.describe "relspec compile with overlays" do
-  ALL = %w[base/cmake base/logging base/types data/models drivers/iodrivers_base tools/legacy tools/orocos.rb].freeze
 
   around do |example|
     Dir.mktmpdir("relspec-overlay") do |dir|
       @dir = dir
       @fixture = ReleaseFixture.new(dir)
-      @fixture.repository("parent", [%w[bionic amd64]], ALL.to_h { |name| [name, {}] })
+      @fixture.repository("parent", [%w[bionic amd64]], ReleaseFixture::LAYOUT.to_h { |name| [name, {}] })
       @fixture.spec("parent", "targets: { bionic: [amd64] }\nrepository: { path: ../repos/parent, trusted: true }\n" \
                               "maintainer: Demo Packaging <demo@example.org>\n")
       @fixture.spec("child", "parent: parent\nblacklist: [{ match: base/types, reason: new API }]\n", workspace: :checkouts)
@@ -33,7 +32,7 @@ RSpec.describe "relspec compile with overlays" do
     File.join(@dir, "out", "child", "bionic-amd64", "rock-child-ruby-tools-orocos.rb")
   end
 
-  PATCH = <<~DIFF
+  patch = <<~DIFF
     --- a/README
     +++ b/README
     @@ -1 +1,2 @@
@@ -46,7 +45,7 @@ RSpec.describe "relspec compile with overlays" do
     others = Dir.glob(File.join(@dir, "out", "child", "bionic-amd64", "*", "*")).reject { |path| path.start_with?(orocos_dir) }
     mtimes = others.to_h { |path| [path, File.mtime(path)] }
     overlay("tools/orocos.rb", "files/lib/extra.rb", "PREFIX = \"@RELSPEC_INSTALL_DIR@\"\n")
-    overlay("tools/orocos.rb", "patches/01-readme.patch", PATCH)
+    overlay("tools/orocos.rb", "patches/01-readme.patch", patch)
     overlay("tools/orocos.rb", "debian/README.Debian", "Release @RELSPEC_RELEASE@, package @RELSPEC_PACKAGE@.\n")
     run = compile
     expect(run.exit_code).to eq(0), run.stderr
@@ -67,7 +66,7 @@ RSpec.describe "relspec compile with overlays" do
   end
 
   it "names the patch and the package when a patch does not apply" do
-    overlay("tools/orocos.rb", "patches/broken.patch", PATCH.sub("tools/orocos.rb: part", "something else"))
+    overlay("tools/orocos.rb", "patches/broken.patch", patch.sub("tools/orocos.rb: part", "something else"))
     run = compile
     expect(run.exit_code).to eq(1)
     expect(run.stderr).to include("error[source-package]: dpkg-source failed for tools/orocos.rb (rock-child-ruby-tools-orocos.rb)")

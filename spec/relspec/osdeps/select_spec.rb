@@ -5,16 +5,18 @@ require "spec_helper"
 # `relspec osdeps select` on a real reprepro repository, through the CLI.
 RSpec.describe "relspec osdeps select" do
   # autoproj package => [Debian name, Depends, Provides]
-  PACKAGES = {
-    "base/cmake" => ["rock-rel-base-cmake", nil, nil],
-    "base/types" => ["rock-rel-base-types", "rock-rel-base-cmake", "rock-typekit"],
-    "base/logging" => ["rock-rel-base-logging", "rock-rel-base-cmake (>= 1.0)", nil],
-    "drivers/iodrivers" => ["rock-rel-drivers-iodrivers", "rock-rel-base-types | rock-rel-base-logging", nil],
-    "tools/monitor" => ["rock-rel-tools-monitor", "rock-rel-drivers-iodrivers, libc6", nil],
-    "tools/typekit-user" => ["rock-rel-tools-typekit-user", "rock-typekit", nil],
-    "data/typekit" => ["rock-rel-data-typekit", nil, "rock-typekit"],
-    "gui/viewer" => ["rock-rel-gui-viewer", "rock-rel-base-logging", nil]
-  }.freeze
+  def packages
+    {
+      "base/cmake" => ["rock-rel-base-cmake", nil, nil],
+      "base/types" => ["rock-rel-base-types", "rock-rel-base-cmake", "rock-typekit"],
+      "base/logging" => ["rock-rel-base-logging", "rock-rel-base-cmake (>= 1.0)", nil],
+      "drivers/iodrivers" => ["rock-rel-drivers-iodrivers", "rock-rel-base-types | rock-rel-base-logging", nil],
+      "tools/monitor" => ["rock-rel-tools-monitor", "rock-rel-drivers-iodrivers, libc6", nil],
+      "tools/typekit-user" => ["rock-rel-tools-typekit-user", "rock-typekit", nil],
+      "data/typekit" => ["rock-rel-data-typekit", nil, "rock-typekit"],
+      "gui/viewer" => ["rock-rel-gui-viewer", "rock-rel-base-logging", nil]
+    }.freeze
+  end
 
   around do |example|
     Dir.mktmpdir("relspec-select") do |dir|
@@ -26,7 +28,7 @@ RSpec.describe "relspec osdeps select" do
 
   def setup
     repository = AptRepositoryBuilder.new(File.join(@dir, "repo"), codenames: ["bionic"], architectures: ["amd64"])
-    repository.add_many(PACKAGES.values.map { |deb, depends, provides| { name: deb, version: "1.0-1~bionic", arch: "amd64", depends: depends, provides: provides } },
+    repository.add_many(packages.values.map { |deb, depends, provides| { name: deb, version: "1.0-1~bionic", arch: "amd64", depends: depends, provides: provides } },
                         codename: "bionic")
     data = File.join(@dir, "data")
     FileUtils.mkdir_p(data)
@@ -35,7 +37,7 @@ RSpec.describe "relspec osdeps select" do
     entry = ->(deb) { { "ubuntu,debian" => { "18.04,bionic,beaver" => deb } } }
     File.write(File.join(data, "base-rel-amd64.yml"),
                YAML.dump("base/cmake" => entry.call("rock-base-rel-base-cmake"), "legacy/only-parent" => entry.call("rock-base-rel-legacy")))
-    File.write(File.join(data, "rel-amd64.yml"), YAML.dump(PACKAGES.transform_values { |deb, _, _| entry.call(deb) }))
+    File.write(File.join(data, "rel-amd64.yml"), YAML.dump(packages.transform_values { |deb, _, _| entry.call(deb) }))
   end
 
   def select(*extra)
@@ -56,7 +58,7 @@ RSpec.describe "relspec osdeps select" do
     run = select
     expect(run.exit_code).to eq(0), run.stderr
     osdeps = output("rock-osdeps.osdeps")
-    expect(osdeps.keys).to eq((PACKAGES.keys + ["legacy/only-parent"]).sort)
+    expect(osdeps.keys).to eq((packages.keys + ["legacy/only-parent"]).sort)
     expect(osdeps["base/cmake"]).to eq("default" => "rock-rel-base-cmake")
     expect(osdeps["legacy/only-parent"]).to eq("default" => "rock-base-rel-legacy")
     expect(output("rock-osdeps.inactive")).to eq({})

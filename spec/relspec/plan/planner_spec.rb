@@ -6,13 +6,12 @@ require "relspec/plan"
 # Plans releases against real reprepro repositories: the root's read over
 # HTTP from a WEBrick server, the others from disk.
 RSpec.describe "relspec plan" do
-  ALL = %w[base/cmake base/logging base/types data/models drivers/iodrivers_base tools/legacy tools/orocos.rb].freeze
 
   before(:all) do
     @dir = Dir.mktmpdir("relspec-plan")
     @fixture = ReleaseFixture.new(@dir)
     root_targets = [%w[bionic amd64], %w[bionic arm64], %w[buster amd64]]
-    root_packages = ALL.to_h { |name| [name, {}] }
+    root_packages = ReleaseFixture::LAYOUT.to_h { |name| [name, {}] }
     root_packages["base/logging"] = { commit_time: "2020-01-01T00:00:00Z" } # older than the workspace
     @server = HttpServer.new(@fixture.repository("root", root_targets, root_packages))
     @fixture.repository("mid", [%w[bionic amd64], %w[buster amd64]], { "data/models" => {}, "base/cmake" => {} })
