@@ -126,7 +126,7 @@ module Relspec
     end
 
     def checkout_of(package)
-      File.join(@planned.release_catalog.workspace, package.source_dir)
+      package.source_dir && File.join(@planned.release_catalog.workspace, package.source_dir)
     end
 
     def input_for(target, package, decision, upstream, decisions)

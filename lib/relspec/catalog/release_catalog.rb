@@ -3,14 +3,23 @@
 require_relative "source"
 require_relative "pinning"
 require_relative "selection"
+require_relative "metapackages"
 
 module Relspec
   class Catalog
     # The catalog of one release: its workspace read for the release's
-    # target distributions, its pins applied, and the selected packages
-    # (with dependencies) for each target codename.
+    # target distributions, its pins applied, the metapackages it selects by
+    # name added as packages, and the names of the selected packages (with
+    # dependencies) for each target codename.
     class ReleaseCatalog
       attr_reader :catalog, :selections, :workspace
+
+      # The selected names on one codename, with their packages.
+      Selected = Struct.new(:names, :catalog) do
+        def packages
+          names.map { |name| catalog.package(name) }
+        end
+      end
 
       # +resolution+: a valid Spec::Resolution; +cache+: a Catalog::Cache
       # for catalogs read from workspaces, or nil. Raises InvalidInput.
@@ -24,7 +33,8 @@ module Relspec
         pins = effective["pins"] || {}
         pinned = Pinning.apply(catalog, pins, root: root,
                                               locate: ->(name) { effective.pin_origin(name)&.location })
-        new(pinned, select_all(pinned, effective, spec_file, workspace), workspace)
+        catalog, names = Metapackages.add(pinned, effective["select"], select_all(pinned, effective, spec_file, workspace))
+        new(catalog, names, workspace)
       end
 
       def self.workspace_path(spec_file, effective)
@@ -63,9 +73,9 @@ module Relspec
 
       private_class_method :workspace_path, :relative_to_cwd, :select_all
 
-      def initialize(catalog, selections, workspace)
+      def initialize(catalog, names, workspace)
         @catalog = catalog
-        @selections = selections.freeze
+        @selections = names.transform_values { |list| Selected.new(list, catalog).freeze }.freeze
         @workspace = workspace
         freeze
       end

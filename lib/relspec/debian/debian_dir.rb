@@ -16,12 +16,12 @@ module Relspec
     # OS dependencies resolved for the codename.
     class DebianDir
       TEMPLATES = File.join(__dir__, "templates")
-      SECTIONS = { "ruby" => "ruby", "import" => "misc", "archive" => "misc" }.freeze
-      ARCH_INDEPENDENT = %w[ruby import archive].freeze
+      SECTIONS = { "ruby" => "ruby", "import" => "misc", "archive" => "misc", "meta" => "metapackages" }.freeze
+      ARCH_INDEPENDENT = %w[ruby import archive meta].freeze
       DH_OPTIONS = { "cmake" => " --buildsystem=cmake", "orogen" => " --buildsystem=cmake",
                      "autotools" => " --buildsystem=autoconf" }.freeze
       BUILD_TOOLS = { "cmake" => ["cmake"], "orogen" => ["cmake"], "autotools" => %w[autoconf automake libtool],
-                      "ruby" => ["ruby"], "import" => [], "archive" => [] }.freeze
+                      "ruby" => ["ruby"], "import" => [], "archive" => [], "meta" => [] }.freeze
 
       # +revision+ stays a placeholder when computing the digest of debian/,
       # which must not depend on the revision it decides.
@@ -110,8 +110,14 @@ module Relspec
       end
 
       def build_depends
+        return ["debhelper-compat (= 13)"] if meta?
+
         tools = BUILD_TOOLS.fetch(@in.fetch(:package).build_type, [])
         (["debhelper-compat (= 13)"] + tools + relations).uniq
+      end
+
+      def meta?
+        @in.fetch(:package).build_type == "meta"
       end
 
       # Build tools autoproj adds as OS dependencies of every cmake or
@@ -126,6 +132,8 @@ module Relspec
 
       def homepage
         url = @in.fetch(:package).vcs.url.to_s
+        return nil if meta?
+
         url.match?(%r{\Ahttps?://}) ? url.delete_suffix(".git") : nil
       end
 

@@ -99,7 +99,9 @@ module Relspec
         FileUtils.mkdir_p(File.dirname(path))
         temporary = "#{path}.#{Process.pid}.#{Thread.current.object_id}.tmp"
         package = @input.fetch(:package)
-        if overlay_files.empty?
+        if package.build_type == "meta"
+          with_meta_tree { |tree| OrigTarball.write(temporary, checkout: tree, commit: nil, prefix: "#{source}-#{upstream}", mtime: commit_time) }
+        elsif overlay_files.empty?
           OrigTarball.write(temporary, checkout: @checkout, commit: package.vcs.commit, prefix: "#{source}-#{upstream}",
                                        mtime: commit_time)
         else
@@ -111,6 +113,15 @@ module Relspec
         path
       ensure
         File.unlink(temporary) if temporary && File.exist?(temporary)
+      end
+
+      # A metapackage has no source: its tarball holds a README naming the members.
+      def with_meta_tree
+        Dir.mktmpdir("relspec-meta") do |dir|
+          package = @input.fetch(:package)
+          File.write(File.join(dir, "README"), "#{package.description}\n")
+          yield dir
+        end
       end
 
       def with_overlaid_tree(overlay_files)

@@ -37,7 +37,15 @@ RSpec.describe Relspec::Catalog::ReleaseCatalog do
   it "expands metapackages and follows optional dependencies that are available" do
     expect(release("select: [base/types]").selections["buster"].names).to eq(%w[base/cmake base/logging base/types])
     expect(release("select: [demo.core]").selections["buster"].names)
-      .to eq(%w[base/cmake base/logging base/types drivers/iodrivers_base tools/orocos.rb])
+      .to eq(%w[base/cmake base/logging base/types demo.core drivers/iodrivers_base tools/orocos.rb])
+  end
+
+  it "adds a metapackage selected by name as a package depending on its members" do
+    release = release("select: [demo.core, data/models]")
+    meta = release.catalog.package("demo.core")
+    expect([meta.build_type, meta.dependencies, meta.commit_time])
+      .to eq(["meta", %w[base/logging base/types drivers/iodrivers_base tools/orocos.rb], "2020-06-05T16:45:00Z"])
+    expect(release.selections["bionic"].names).to include("demo.core", "data/models")
   end
 
   it "loads the same selection from the workspace and from its snapshot" do

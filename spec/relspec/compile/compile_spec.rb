@@ -129,3 +129,30 @@ RSpec.describe "relspec compile" do
     expect(run.stderr).to start_with("specs/snap.yml:2:12: error[snapshot-workspace]: compile needs the package checkouts")
   end
 end
+
+RSpec.describe "relspec compile of a selected metapackage" do
+  it "emits a metapackage depending on the members, which builds and resolves through osdeps" do
+    Dir.mktmpdir("relspec-meta") do |dir|
+      fixture = ReleaseFixture.new(dir)
+      fixture.spec("meta", "select: [demo.core]\ntargets: { bionic: [amd64] }\nmaintainer: Demo <demo@example.org>\n",
+                   workspace: :checkouts)
+      run = relspec("compile", "specs/meta.yml", "--out", "out", chdir: dir)
+      expect(run.exit_code).to eq(0), run.stderr
+      dsc = Dir.glob(File.join(dir, "out", "meta", "bionic-amd64", "rock-meta-meta-demo.core", "*.dsc")).first
+      expect(File.basename(dsc)).to eq("rock-meta-meta-demo.core_0.20200605.164500-1~bionic.dsc")
+      expect(File.read(dsc)).to include("Architecture: all")
+      Dir.mktmpdir do |work|
+        output, status = Open3.capture2e("dpkg-source", "-x", dsc, "meta", chdir: work)
+        expect(status).to be_success, output
+        output, status = Open3.capture2e("dpkg-buildpackage", "-us", "-uc", "-b", "-d", chdir: File.join(work, "meta"))
+        expect(status).to be_success, output.lines.last(10).join
+        deb = Dir.glob(File.join(work, "*.deb")).first
+        depends, = Open3.capture2("dpkg-deb", "-f", deb, "Depends")
+        expect(depends).to include("rock-meta-base-types (>= #{fixture.version('base/types', 'bionic')})",
+                                   "rock-meta-ruby-tools-orocos.rb (>= ")
+      end
+      osdeps = YAML.safe_load(File.read(File.join(dir, "releases", "meta", "osdeps", "meta-amd64.yml")))
+      expect(osdeps["demo.core"]).to eq("ubuntu,debian" => { "18.04,bionic,beaver" => "rock-meta-meta-demo.core" })
+    end
+  end
+end
