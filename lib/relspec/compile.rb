@@ -92,7 +92,7 @@ module Relspec
       package = @catalog.package(decision.package)
       upstream = Debian::PackageVersion.upstream_of(decision.version)
       input = input_for(target, package, decision, upstream, decisions)
-      overlay = Debian::Overlay.for(@project_root, package.name)
+      overlay = Debian::Overlay.for(@project_root, package.name, arch: target.arch)
       digest = Digest::SHA256.hexdigest(Debian::DebianDir.digest(Debian::DebianDir.render(input, revision: "0")) +
                                         overlay.signature)
       revision = revision_for(target, decision, upstream, digest)

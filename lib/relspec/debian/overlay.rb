@@ -10,18 +10,26 @@ module Relspec
     #   files/…        files copied over the source (they end up in the orig tarball)
     #   patches/*.patch quilt patches, listed in debian/patches/series in name order
     #   debian/…       files replacing the generated debian/ ones
+    #   @<arch>/patches, @<arch>/debian   the same for one architecture only,
+    #                  over the common ones (files/ cannot be per architecture:
+    #                  the orig tarball is the same for every target)
     # In overlay files (not patches), @RELSPEC_INSTALL_DIR@, @RELSPEC_RELEASE@
     # and @RELSPEC_PACKAGE@ are replaced. Links are refused, so an overlay can
     # never reach outside its package's tree.
     class Overlay
       PLACEHOLDERS = %w[@RELSPEC_INSTALL_DIR@ @RELSPEC_RELEASE@ @RELSPEC_PACKAGE@].freeze
 
-      def self.for(root, package_name)
-        new(File.join(root, "overlays", package_name))
+      def self.for(root, package_name, arch: nil)
+        new(File.join(root, "overlays", package_name), arch)
       end
 
-      def initialize(dir)
+      def initialize(dir, arch = nil)
         @dir = dir
+        @arch = arch
+        return unless arch && File.directory?(File.join(dir, "@#{arch}", "files"))
+
+        raise InvalidInput, [problem(File.join(dir, "@#{arch}", "files"),
+                                     "files/ cannot be per architecture: the orig tarball is shared by every target "                                      "(use a patch in @#{arch}/patches/)")]
       end
 
       def empty?
@@ -34,12 +42,12 @@ module Relspec
       end
 
       def debian_files(substitutions)
-        read_tree("debian").transform_values { |content| substitute(content, substitutions) }
+        layered("debian").transform_values { |content| substitute(content, substitutions) }
       end
 
       # [[name, content], …] in name order, each with a DEP-3 header.
       def patches(package_name)
-        read_tree("patches").select { |name, _| name.end_with?(".patch") && !name.include?("/") }.sort.map do |name, content|
+        layered("patches").select { |name, _| name.end_with?(".patch") && !name.include?("/") }.sort.map do |name, content|
           [name, content.match?(/\A(Description|Subject|From):/) ? content : "Description: #{name} (relspec overlay of #{package_name})\n---\n#{content}"]
         end
       end
@@ -47,10 +55,18 @@ module Relspec
       # A digest of everything in the overlay, so that changing it changes
       # what is emitted.
       def signature
-        %w[files patches debian].flat_map { |part| read_tree(part).sort.map { |path, content| "#{part}/#{path}\0#{content}" } }.join("\0")
+        parts = %w[files patches debian].map { |part| [part, read_tree(part)] }
+        parts += %w[patches debian].map { |part| ["@#{@arch}/#{part}", read_tree("@#{@arch}/#{part}")] } if @arch
+        parts.flat_map { |part, tree| tree.sort.map { |path, content| "#{part}/#{path}\0#{content}" } }.join("\0")
       end
 
       private
+
+      # The common part with the architecture's over it.
+      def layered(part)
+        common = read_tree(part)
+        @arch ? common.merge(read_tree("@#{@arch}/#{part}")).sort.to_h : common
+      end
 
       def read_tree(part)
         base = File.join(@dir, part)

@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require "spec_helper"
+require "digest"
 
 # Overlays and incremental compiles: changing one package regenerates only
 # it, with the next revision.
@@ -81,5 +82,33 @@ RSpec.describe "relspec compile with overlays" do
     run = compile
     expect(run.exit_code).to eq(1)
     expect(run.stderr).to include("error[overlay]: overlays may not contain links")
+  end
+end
+
+RSpec.describe "relspec compile with per-architecture overlays" do
+  it "applies @<arch>/ overlays to that architecture only, over the common ones" do
+    Dir.mktmpdir("relspec-arch-overlay") do |dir|
+      fixture = ReleaseFixture.new(dir)
+      fixture.spec("arch", "select: [base/cmake]\ntargets: { bionic: [amd64, arm64] }\nmaintainer: Demo <demo@example.org>\n",
+                   workspace: :checkouts)
+      overlay = File.join(dir, "overlays", "base", "cmake")
+      FileUtils.mkdir_p([File.join(overlay, "debian"), File.join(overlay, "@arm64", "debian")])
+      File.write(File.join(overlay, "debian", "NOTE"), "common\n")
+      File.write(File.join(overlay, "@arm64", "debian", "NOTE"), "arm64 only\n")
+      run = relspec("compile", "specs/arch.yml", "--out", "out", chdir: dir)
+      expect(run.exit_code).to eq(0), run.stderr
+      notes = %w[amd64 arm64].to_h do |arch|
+        tarball = Dir.glob(File.join(dir, "out", "arch", "bionic-#{arch}", "*", "*.debian.tar.xz")).first
+        [arch, IO.popen(["tar", "-xJOf", tarball, "debian/NOTE"], &:read)]
+      end
+      expect(notes).to eq("amd64" => "common\n", "arm64" => "arm64 only\n")
+      origs = %w[amd64 arm64].map { |arch| Digest::SHA256.file(Dir.glob(File.join(dir, "out", "arch", "bionic-#{arch}", "*", "*.orig.tar.gz")).first).hexdigest }
+      expect(origs.uniq.size).to eq(1)
+
+      FileUtils.mkdir_p(File.join(overlay, "@arm64", "files"))
+      run = relspec("compile", "specs/arch.yml", "--out", "out", chdir: dir)
+      expect(run.exit_code).to eq(1)
+      expect(run.stderr).to include("error[overlay]: files/ cannot be per architecture")
+    end
   end
 end
