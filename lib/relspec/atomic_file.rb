@@ -1,5 +1,7 @@
 # frozen_string_literal: true
 
+require_relative "error"
+
 module Relspec
   # Writes a file so that readers see either the old or the new content,
   # never half of it: a temporary file in the same folder, then a rename.
@@ -15,6 +17,8 @@ module Relspec
         file.fsync
       end
       File.rename(temporary, path)
+    rescue SystemCallError => e
+      raise Error, "cannot write #{path}: #{e.message.sub(/ @ .*/, '').sub(/ - .*\z/, '')}"
     ensure
       File.unlink(temporary) if temporary && File.exist?(temporary)
     end

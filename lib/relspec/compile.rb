@@ -35,7 +35,7 @@ module Relspec
       require_workspace
       @catalog = @planned.release_catalog.catalog
       @previous = Plan::Lock.builds(@planned.lock_path)
-      @project_root = File.dirname(File.dirname(@path))
+      @project_root = Plan.project_root(@path)
       decisions, jobs, published = prepare
       written, unchanged = emit(jobs)
       plan = with_decisions(decisions)
@@ -188,8 +188,10 @@ module Relspec
       unchanged = []
       errors = []
       lock = Mutex.new
+      failures = []
       Array.new([@jobs, jobs.size].min) do
         Thread.new do
+          Thread.current.report_on_exception = false
           while (job = next_job(queue))
             dir, package = job
             begin
@@ -197,10 +199,13 @@ module Relspec
               lock.synchronize { (changed ? written : unchanged) << dir }
             rescue InvalidInput => e
               lock.synchronize { errors.concat(e.diagnostics) }
+            rescue StandardError => e # re-raised below, in the main thread, where errors become messages
+              lock.synchronize { failures << e }
             end
           end
         end
       end.each(&:join)
+      raise failures.first unless failures.empty?
       raise InvalidInput, errors unless errors.empty?
 
       [written.sort, unchanged.sort]

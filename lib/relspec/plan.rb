@@ -34,12 +34,41 @@ module Relspec
       targets = Target.all(effective)
       inventory = Inventory.read(ancestors, targets)
       own = read_own(resolution, targets, fetcher_options, cache)
-      lock_path = Lock.path(File.dirname(File.dirname(path)), effective.release)
+      lock_path = Lock.path(project_root(path), effective.release)
       planner = Planner.new(release_catalog: release_catalog, effective: effective, spec_file: resolution.spec_file,
                             ancestors: ancestors, inventory: inventory, own: own, revisions: Lock.revisions(lock_path))
-      Result.new(resolution: resolution, plan: planner.plan, lock_path: lock_path,
+      Result.new(resolution: resolution, plan: with_recorded_digests(planner.plan, lock_path), lock_path: lock_path,
                  spec_digest: Lock.spec_digest(effective), own: own, release_catalog: release_catalog,
                  ancestors: ancestors)
+    end
+
+    # The folder above the spec's folder (where releases/ and overlays/ are),
+    # as the user would write it.
+    def self.project_root(path)
+      root = File.dirname(File.dirname(File.expand_path(path)))
+      cwd = Dir.pwd
+      return "." if root == cwd
+
+      root.start_with?("#{cwd}/") ? root.delete_prefix("#{cwd}/") : root
+    end
+
+    # The debian/ digests the lock recorded (compile writes them) stay with
+    # the builds whose version did not change, so that writing the lock from
+    # `plan --write` never loses what decides the next revision.
+    def self.with_recorded_digests(plan, lock_path)
+      recorded = Lock.builds(lock_path)
+      return plan if recorded.empty?
+
+      targets = plan.targets.to_h do |target, decisions|
+        [target, decisions.transform_values do |decision|
+          entry = recorded.dig(target.to_s, decision.package)
+          next decision if decision.inherit? || entry.nil? || entry["version"] != decision.version || !entry["debian_digest"]
+
+          Decision.new(**decision.each_pair.to_h, debian_digest: entry["debian_digest"]).freeze
+        end]
+      end
+      ReleasePlan.new(release: plan.release, targets: targets, packages: plan.packages,
+                      release_digests: plan.release_digests, warnings: plan.warnings, notes: plan.notes)
     end
 
     def self.read_own(resolution, targets, fetcher_options, cache)
@@ -56,6 +85,6 @@ module Relspec
       raise InvalidInput, [Diagnostic.error("own-repository", "the repository of #{resolution.effective.release}: #{e.message}",
                                             location: spec_file.key_location(["repository"]))]
     end
-    private_class_method :read_own
+    private_class_method :read_own, :with_recorded_digests
   end
 end

@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require "net/http"
+require "openssl"
 require "uri"
 
 module Relspec
@@ -56,6 +57,8 @@ module Relspec
         begin
           attempt += 1
           get(URI(url))
+        rescue OpenSSL::SSL::SSLError, Net::HTTPBadResponse, Net::ProtocolError => e
+          raise Failure, "#{url}: #{e.message}"
         rescue Net::OpenTimeout, Net::ReadTimeout, SystemCallError, SocketError, IOError, RetryableAnswer => e
           raise Failure, "#{url}: #{describe(e)} (after #{attempt} attempts)" if attempt >= @retries
 

@@ -73,7 +73,7 @@ module Relspec
         ReleaseFile.parse(text, raw: raw)
       rescue Fetcher::Failure => e
         raise Error, e.message
-      rescue Deb822::ParseError => e
+      rescue Deb822::ParseError, ArgumentError, TypeError => e
         raise Error, "#{url}/#{base}: malformed Release file: #{e.message}"
       end
 

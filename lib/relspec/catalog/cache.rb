@@ -5,7 +5,7 @@ require "fileutils"
 require "find"
 require "psych"
 require_relative "snapshot_source"
-require_relative "git_repository"
+require_relative "git_state"
 require_relative "../atomic_file"
 
 module Relspec
@@ -86,7 +86,7 @@ module Relspec
         configuration_files(root).each { |path| digest << path << "\0" << File.binread(path) << "\0" }
         catalog.packages.each_value do |package|
           checkout = File.join(root, package.source_dir)
-          digest << package.name << "\0" << (GitRepository.new(checkout).head || []).join(" ") << "\0"
+          digest << package.name << "\0" << (GitState.commit_of(checkout) || []).join(" ") << "\0"
           %w[manifest.xml package.xml].each do |manifest|
             file = File.join(checkout, manifest)
             digest << manifest << (File.file?(file) ? File.binread(file) : "-") << "\0"

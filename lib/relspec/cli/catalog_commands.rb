@@ -40,7 +40,13 @@ module Relspec
         require_relative "../catalog/release_catalog"
         release = Catalog::ReleaseCatalog.load(Spec.resolve(path))
         selections = release.selections
-        selections = selections.slice(options[:target]) if options[:target]
+        if options[:target]
+          unless selections.key?(options[:target])
+            raise Error, "#{options[:target]} is not a target codename of this release (#{selections.keys.join(', ')})"
+          end
+
+          selections = selections.slice(options[:target])
+        end
         options[:format] == "json" ? $stdout.puts(JSON.pretty_generate(as_json(release, selections))) : print_text(release, selections)
       end
 

@@ -24,6 +24,11 @@ module Relspec
 
         stderr.puts("relspec: error: #{e.message}")
         EXIT_USER_ERROR
+      rescue SystemCallError => e
+        raise if debug
+
+        stderr.puts("relspec: error: #{e.message.sub(/ @ \w+/, '')}")
+        EXIT_USER_ERROR
       rescue Interrupt
         stderr.puts("relspec: interrupted")
         EXIT_INTERRUPTED

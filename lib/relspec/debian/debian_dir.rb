@@ -138,8 +138,9 @@ module Relspec
       end
 
       def synopsis
-        text = @in.fetch(:package).summary || @in.fetch(:package).description || @in.fetch(:package).name
-        text = text.lines.first.strip.delete_suffix(".")
+        package = @in.fetch(:package)
+        text = [package.summary, package.description, package.name].find { |candidate| candidate && !candidate.strip.empty? }
+        text = text.lines.first.to_s.strip.delete_suffix(".")
         text = "#{@in.fetch(:package).name} of release #{@in.fetch(:release)}" if text.empty?
         text.length > 78 ? "#{text[0, 75]}..." : text
       end

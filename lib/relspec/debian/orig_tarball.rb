@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require "open3"
+require_relative "../error"
 
 module Relspec
   module Debian
@@ -17,7 +18,7 @@ module Relspec
     # 256 bytes in GNU long-name records.
     module OrigTarball
       # Raised when the tarball cannot be made.
-      class Failure < StandardError; end
+      class Failure < Relspec::Error; end
 
       module_function
 

@@ -164,6 +164,12 @@ module Relspec
         output, status = Open3.capture2e({ "LC_ALL" => "C.UTF-8" }, *command, chdir: dir)
         return if status.success?
 
+        fail_with(command, output)
+      rescue SystemCallError => e
+        fail_with(command, e.message)
+      end
+
+      def fail_with(command, output)
         detail = output.lines.grep(/error|fail|FAILED|can't|cannot/i).first(5).join.strip
         detail = output.lines.last(5).join.strip if detail.empty?
         raise InvalidInput, [Diagnostic.error("source-package", "#{command.first} failed for #{@input.fetch(:package).name} " \

@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require_relative "../yaml/located_document"
+require_relative "../spec/names"
 require_relative "../diagnostic"
 require_relative "../error"
 
@@ -16,15 +17,30 @@ module Relspec
 
       # Release names from the root of the hierarchy down to +release+.
       def lineage(release)
-        index = load_yaml(File.join(@dir, "releases.yml"), required: false) || {}
+        path = File.join(@dir, "releases.yml")
+        index = load_yaml(path, required: false) || {}
+        raise InvalidInput, [problem("wrong-type", "releases.yml must map release names to entries", path)] \
+          unless index.is_a?(Hash)
+
         chain = [release]
-        while (parent = index.dig(chain.first, "depends_on"))
-          raise InvalidInput, [problem("release-cycle", "releases.yml: depends_on cycle through #{parent}", "releases.yml")] \
-            if chain.include?(parent)
+        while (parent = parent_of(index, chain.first, path))
+          raise InvalidInput, [problem("release-cycle", "depends_on cycle through #{parent}", path)] if chain.include?(parent)
 
           chain.unshift(parent)
         end
         chain
+      end
+
+      def parent_of(index, release, path)
+        entry = index[release]
+        return nil if entry.nil?
+        raise InvalidInput, [problem("wrong-type", "the entry of #{release} must be a mapping", path)] unless entry.is_a?(Hash)
+
+        parent = entry["depends_on"]
+        return nil if parent.nil?
+        return parent if Spec::Names.release?(parent)
+
+        raise InvalidInput, [problem("release-name", "#{release} depends_on #{parent.inspect}, which is not a release name", path)]
       end
 
       # autoproj package => osdeps entry, ancestors first and later releases

@@ -79,23 +79,16 @@ module Relspec
         document.ok? && data.is_a?(Hash) && data[FORMAT_KEY] == FORMAT_VERSION ? data : nil
       end
 
-      # package => {upstream version => revision} from an existing lock, so
-      # that a package keeps its revision from plan to plan.
+      # "codename/arch" => package => {upstream version => revision} from an
+      # existing lock, so that a package keeps its revision on each target from
+      # plan to plan (compile decides revisions per target).
       def revisions(path)
-        data = read(path)
-        return {} unless data
-
-        revisions = Hash.new { |hash, key| hash[key] = {} }
-        data.fetch("targets", {}).each_value do |decisions|
-          decisions.each do |name, decision|
-            next if decision["decision"] == "inherit"
-
-            version = decision["version"].to_s
-            upstream, revision = version.match(/\A(.*)-(\d+)~[a-z0-9-]+\z/)&.captures
-            revisions[name][upstream] = [revisions[name][upstream].to_i, revision.to_i].max if upstream
+        builds(path).transform_values do |decisions|
+          decisions.each_with_object({}) do |(name, decision), out|
+            upstream, revision = decision["version"].to_s.match(/\A(.*)-(\d+)~[a-z0-9-]+\z/)&.captures
+            out[name] = { upstream => revision.to_i } if upstream
           end
         end
-        revisions
       end
     end
   end

@@ -28,8 +28,8 @@ module Relspec
       # +release_catalog+: Catalog::ReleaseCatalog; +effective+: the
       # release's EffectiveSpec; +spec_file+: its SpecFile (for locations);
       # +ancestors+: Plan::Ancestor in search order; +inventory+: Inventory;
-      # +own+: OwnRepository; +revisions+: package => {upstream => revision}
-      # remembered by the previous lock.
+      # +own+: OwnRepository; +revisions+: "codename/arch" => package =>
+      # {upstream => revision} remembered by the previous lock.
       def initialize(release_catalog:, effective:, spec_file:, ancestors:, inventory:, own:, revisions: {})
         @catalog = release_catalog.catalog
         @selections = release_catalog.selections
@@ -144,13 +144,13 @@ module Relspec
                                                 location: @spec_file.location(["workspace"]),
                                                 hint: "plan from the workspace rather than a snapshot for pins by tag or branch")]
         end
-        version = Debian::PackageVersion.full(upstream, revision(package, upstream), target.codename)
+        version = Debian::PackageVersion.full(upstream, revision(target, package, upstream), target.codename)
         kind = @own.version_of(deb, target) == version ? :published : :build
         Decision.new(package: package.name, kind: kind, deb_name: deb, version: version, cause: cause).freeze
       end
 
-      def revision(package, upstream)
-        @revisions.dig(package.name, upstream) || 1
+      def revision(target, package, upstream)
+        @revisions.dig(target.to_s, package.name, upstream) || 1
       end
 
       def upstream(package)

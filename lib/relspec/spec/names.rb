@@ -14,8 +14,10 @@ module Relspec
       GEM_VERSION = /\A[0-9]+(\.[0-9A-Za-z]+)*\z/
       CODENAME = /\A[a-z][a-z0-9-]*\z/
       COMMIT = /\A[0-9a-f]{7,40}\z/
-      # "Name <address>", as debian/control wants it
-      MAINTAINER = /\A[^<>]+ <[^<>\s]+@[^<>\s]+>\z/
+      # "Name <address>", as debian/control wants it (one line)
+      MAINTAINER = /\A[^<>[:cntrl:]]+ <[^<>\s]+@[^<>\s]+>\z/
+      # where packages install: it ends up in debian/rules and in env.sh
+      INSTALL_PREFIX = %r{\A(/[A-Za-z0-9._+-]+)+\z}
 
       RELEASE_HINT = "release names use lowercase letters, digits and . + - , starting with a letter (e.g. master-20.06)"
 

@@ -112,3 +112,36 @@ RSpec.describe "relspec compile with per-architecture overlays" do
     end
   end
 end
+
+RSpec.describe "the lock between plan and compile" do
+  it "keeps the debian/ digests through plan --write, so a later debian/ change still raises the revision" do
+    Dir.mktmpdir("relspec-lock-digests") do |dir|
+      fixture = ReleaseFixture.new(dir)
+      fixture.spec("rel", "select: [base/cmake]\ntargets: { bionic: [amd64] }\nmaintainer: Demo <demo@example.org>\n",
+                   workspace: :checkouts)
+      expect(relspec("compile", "specs/rel.yml", "--out", "out", chdir: dir).exit_code).to eq(0)
+      lock = File.join(dir, "releases", "rel", "lock.yml")
+      digests = File.read(lock).scan(/debian_digest: (\h+)/).flatten
+      expect(digests.size).to eq(1)
+      # from the spec's folder: the lock is still the project's
+      expect(relspec("plan", "rel.yml", "--write", chdir: File.join(dir, "specs")).exit_code).to eq(0)
+      expect(File.read(lock).scan(/debian_digest: (\h+)/).flatten).to eq(digests)
+      expect(File.exist?(File.join(dir, "specs", "releases"))).to be(false)
+
+      FileUtils.mkdir_p(File.join(dir, "overlays", "base", "cmake", "debian"))
+      File.write(File.join(dir, "overlays", "base", "cmake", "debian", "NOTE"), "changed\n")
+      expect(relspec("compile", "specs/rel.yml", "--out", "out", chdir: dir).exit_code).to eq(0)
+      expect(Dir.glob(File.join(dir, "out", "rel", "bionic-amd64", "*", "*.dsc")).first).to end_with("-2~bionic.dsc")
+    end
+  end
+
+  it "says what it cannot write, as a user error" do
+    Dir.mktmpdir("relspec-unwritable") do |dir|
+      workspace = DemoWorkspace.build(File.join(dir, "ws")).root
+      run = relspec("catalog", "export", workspace, "--targets", "bionic",
+                    "--output", File.join(dir, "missing", "folder", "catalog.yml"))
+      expect(run.exit_code).to eq(1)
+      expect(run.stderr).to match(%r{\Arelspec: error: cannot write #{Regexp.escape(dir)}/missing/folder/catalog.yml: No such file or directory})
+    end
+  end
+end

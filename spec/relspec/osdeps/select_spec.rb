@@ -129,3 +129,23 @@ RSpec.describe "relspec osdeps select" do
     expect(osdeps.size).to be > 300
   end
 end
+
+RSpec.describe "relspec osdeps select with a malformed releases.yml" do
+  {
+    "- rel\n" => "releases.yml must map release names to entries",
+    "rel: base-rel\n" => "the entry of rel must be a mapping",
+    "rel: { depends_on: ../../etc }\n" => 'rel depends_on "../../etc", which is not a release name'
+  }.each do |index, message|
+    it "refuses #{index.strip.inspect} with a clear message" do
+      Dir.mktmpdir("relspec-releases-yml") do |dir|
+        File.write(File.join(dir, "releases.yml"), index)
+        File.write(File.join(dir, "rel-amd64.yml"), "{}\n")
+        run = relspec("osdeps", "select", "--release", "rel", "--arch", "amd64", "--os", "ubuntu,debian:18.04,bionic",
+                      "--data", dir, "--output", File.join(dir, "out"))
+        expect(run.exit_code).to eq(1)
+        expect(run.stderr).to include(message)
+        expect(run.stderr).not_to match(/\.rb:\d+:in /)
+      end
+    end
+  end
+end

@@ -19,10 +19,12 @@ module Relspec
 
         def self.install_prefix(file)
           prefix = file.usable("install_prefix")
-          return nil if !prefix.is_a?(String) || (prefix.start_with?("/") && !prefix.split("/").include?(".."))
+          return nil if !prefix.is_a?(String) || (Names::INSTALL_PREFIX.match?(prefix) && !prefix.split("/").include?(".."))
 
-          Diagnostic.error("install-prefix", "install_prefix #{prefix.inspect} must be an absolute path without ..",
-                           location: file.location(["install_prefix"]), hint: "e.g. /opt/rock")
+          Diagnostic.error("install-prefix", "install_prefix #{prefix.inspect} must be an absolute path of plain names " \
+                                             "(letters, digits, . _ + -), without ..",
+                           location: file.location(["install_prefix"]),
+                           hint: "e.g. /opt/rock; the path goes into debian/rules and shell scripts")
         end
 
         def self.package_prefix(file)
