@@ -60,4 +60,4 @@ SIZES.each do |count|
                 (ours[0] / peer[0] - 1) * 100)
   end
 end
-puts "relspec MiB is the larger of relspec's process and its autoproj child (GNU time follows the waited-for child)."
+puts "peak RSS of each whole process (GNU time)."

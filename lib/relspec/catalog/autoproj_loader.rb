@@ -1,13 +1,12 @@
 # frozen_string_literal: true
 
-# Runs inside a child process started by AutoprojSource: loads one autoproj
-# workspace once per target distribution with the real autoproj gem, offline
-# and read-only, and prints what it found as JSON on stdout.
+# Loads one autoproj workspace once per target distribution with the real
+# autoproj gem, offline and read-only, into plain data. Required only when a
+# workspace is read, so commands that do not read one never load autoproj.
 #
-# It lives in its own process because autoproj keeps process-global state
-# (registered packages, Rake tasks, the current workspace) and because it has
-# to be patched not to write: relspec's own process stays clean.
-require "json"
+# autoproj keeps process-global state (registered packages, Rake tasks, the
+# current workspace): it is reset before and after every load. It also has
+# to be patched not to write into the workspace (ReadOnlyConfiguration).
 require "autoproj"
 
 module Relspec
@@ -72,47 +71,43 @@ module Relspec
 
       module_function
 
-      # The answer goes to the original stdout; autoproj's own chatter is
-      # sent to stderr so that it cannot corrupt the JSON.
-      def main
-        @answer = $stdout.dup
-        $stdout.reopen($stderr)
-        request = JSON.parse($stdin.read)
+      # Loads +root+ once per target: {"catalog" => data} or, for a problem
+      # of the workspace, {"error" => {rule, message, file, line, hint}}.
+      def answer_for(root, targets)
         install_patches
-        answer("catalog" => load_all(request.fetch("root"), request.fetch("targets")))
+        { "catalog" => load_all(root, targets) }
       rescue WorkspaceProblem => e
-        report(e.rule, e.message, file: e.file, line: e.line, hint: e.hint)
+        problem(e.rule, e.message, file: e.file, line: e.line, hint: e.hint)
       rescue Autoproj::ConfigError, Autoproj::PackageNotFound, Autobuild::Exception, Autoproj::InputError => e
-        report_autoproj_error(e)
+        autoproj_problem(e)
       rescue ArgumentError => e
         # autoproj reports a package set folder that does not exist this way
         raise unless (missing = e.message[/'([^']+)' is neither a remote source specification, nor an existing local directory/, 1])
 
-        report("missing-package-set", "package set #{missing} does not exist", file: "autoproj/manifest",
-                                                                              hint: "check `package_sets:` in autoproj/manifest, or run `autoproj update`")
+        problem("missing-package-set", "package set #{missing} does not exist", file: "autoproj/manifest",
+                                                                               hint: "check `package_sets:` in autoproj/manifest, or run `autoproj update`")
+      ensure
+        reset_global_state
       end
 
-      def answer(document)
-        @answer.write(JSON.generate(document))
-        @answer.flush
+      def problem(rule, message, file: nil, line: nil, hint: nil)
+        { "error" => { "rule" => rule, "message" => message, "file" => file, "line" => line, "hint" => hint } }
       end
 
-      def report(rule, message, file: nil, line: nil, hint: nil)
-        answer("error" => { "rule" => rule, "message" => message, "file" => file, "line" => line, "hint" => hint })
-      end
-
-      def report_autoproj_error(error)
+      def autoproj_problem(error)
         message = error.message.strip
         if (invalid = message.match(/invalid (\S+manifest\.xml): (.*)/m))
           line = invalid[2][/Line: (\d+)/, 1]&.to_i
           reason = invalid[2].lines.first.strip
-          return report("package-manifest", "broken manifest.xml: #{reason}", file: invalid[1], line: line,
-                                                                                hint: "fix the XML of the package's manifest.xml")
+          return problem("package-manifest", "broken manifest.xml: #{reason}", file: invalid[1], line: line,
+                                                                                 hint: "fix the XML of the package's manifest.xml")
         end
-        report("autoproj", message.lines.first(6).join.strip, hint: "autoproj could not load the workspace")
+        problem("autoproj", message.lines.first(6).join.strip, hint: "autoproj could not load the workspace")
       end
 
       def install_patches
+        return if Autoproj::Ops::Configuration.include?(ReadOnlyConfiguration)
+
         Autoproj::Ops::Configuration.prepend(ReadOnlyConfiguration)
         Autoproj::Configuration.prepend(AnyRubyConfiguration)
         # autoproj's DSL helper creates <srcdir>/.test-results; keep the rest of it.
@@ -165,9 +160,11 @@ module Relspec
         manifest = ws.manifest
         packages = {}
         os_dependencies = {}
+        # every osdep name is resolved once per load, however many packages use it
+        resolved = Hash.new { |cache, name| cache[name] = classify(ws.os_package_resolver, name) }
         manifest.each_package_definition do |definition|
           packages[definition.name] = package_data(ws, definition)
-          os_dependencies[definition.name] = classify_os_dependencies(ws.os_package_resolver, definition.autobuild)
+          os_dependencies[definition.name] = merge_classified(definition.autobuild.os_packages.sort.map { |name| resolved[name] })
         end
         { packages: packages, os_dependencies: os_dependencies, workspace: workspace_data(manifest) }
       end
@@ -230,17 +227,22 @@ module Relspec
         path.to_s.delete_prefix("#{ws.root_dir}/")
       end
 
-      def classify_os_dependencies(resolver, autobuild)
+      # {"apt" => […], "gems" => […], …} for one osdep name.
+      def classify(resolver, name)
         result = Hash.new { |hash, key| hash[key] = [] }
-        autobuild.os_packages.sort.each do |name|
-          case resolver.availability_of(name)
-          when Autoproj::OSPackageResolver::NONEXISTENT then result["nonexistent"] << name
-          when Autoproj::OSPackageResolver::IGNORE then result["ignored"] << name
-          when Autoproj::OSPackageResolver::AVAILABLE then add_resolved(resolver, name, result)
-          else result["unresolved"] << name
-          end
+        case resolver.availability_of(name)
+        when Autoproj::OSPackageResolver::NONEXISTENT then result["nonexistent"] << name
+        when Autoproj::OSPackageResolver::IGNORE then result["ignored"] << name
+        when Autoproj::OSPackageResolver::AVAILABLE then add_resolved(resolver, name, result)
+        else result["unresolved"] << name
         end
-        result.transform_values { |names| names.uniq.sort }
+        result
+      end
+
+      def merge_classified(parts)
+        merged = Hash.new { |hash, key| hash[key] = [] }
+        parts.each { |part| part.each { |kind, names| merged[kind].concat(names) } }
+        merged.transform_values { |names| names.uniq.sort }
       end
 
       def add_resolved(resolver, name, result)
@@ -258,4 +260,3 @@ module Relspec
   end
 end
 
-Relspec::Catalog::AutoprojLoader.main if $PROGRAM_NAME == __FILE__

@@ -1,8 +1,6 @@
 # frozen_string_literal: true
 
 require "json"
-require "open3"
-require "rbconfig"
 require_relative "../catalog"
 require_relative "../diagnostic"
 require_relative "../error"
@@ -12,14 +10,12 @@ module Relspec
   class Catalog
     # Reads a catalog from a real autoproj workspace with the autoproj gem.
     #
-    # autoproj runs in a child process (AutoprojLoader) that loads the
-    # workspace once per target distribution, because autoproj decides at load
-    # time which dependencies are OS packages, keeps global state, and must be
+    # AutoprojLoader loads the workspace once per target distribution,
+    # because autoproj decides at load time which dependencies are OS
+    # packages; it resets autoproj's global state around every load and is
     # patched not to write into the workspace. Commits and commit times come
-    # from git in each checkout.
+    # from the checkouts' .git folders.
     class AutoprojSource
-      LOADER = File.expand_path("autoproj_loader.rb", __dir__)
-
       # +distributions+: codename => Spec::Distribution, the targets to resolve
       # OS dependencies for.
       def self.load(root, distributions)
@@ -48,20 +44,17 @@ module Relspec
                   "point `workspace:` at the root of an autoproj workspace or at a catalog snapshot (.yml)")
       end
 
+      # autoproj's own messages go to stderr while it loads: relspec's
+      # stdout carries data (catalog export writes the snapshot there).
       def run_loader
-        request = { "root" => File.expand_path(@root), "targets" => operating_systems }
-        stdout, stderr, status = Open3.capture3(RbConfig.ruby, LOADER, stdin_data: JSON.generate(request))
-        answer = parse_answer(stdout)
-        raise Error, "loading #{@root} with autoproj failed:\n#{stderr.lines.last(15).join}" unless answer && status.success?
-
+        require_relative "autoproj_loader"
+        saved = $stdout
+        $stdout = $stderr
+        answer = AutoprojLoader.answer_for(File.expand_path(@root), operating_systems)
         report_problem(answer["error"]) if answer["error"]
         answer.fetch("catalog")
-      end
-
-      def parse_answer(stdout)
-        JSON.parse(stdout)
-      rescue JSON::ParserError
-        nil
+      ensure
+        $stdout = saved if saved
       end
 
       def operating_systems
