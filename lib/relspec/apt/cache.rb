@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require "fileutils"
+require_relative "../cache_dir"
 require_relative "../atomic_file"
 
 module Relspec
@@ -11,11 +12,7 @@ module Relspec
     class Cache
       # The XDG cache folder (read from the environment, never written to it).
       def self.default_dir
-        base = ENV.fetch("XDG_CACHE_HOME", nil)
-        base = File.join(Dir.home, ".cache") if base.nil? || base.empty?
-        File.join(base, "relspec", "apt")
-      rescue ArgumentError
-        nil
+        CacheDir.for("apt")
       end
 
       def initialize(dir)

@@ -2,6 +2,7 @@
 
 require "digest"
 require "fileutils"
+require_relative "../cache_dir"
 require "find"
 require "psych"
 require_relative "snapshot_source"
@@ -21,11 +22,7 @@ module Relspec
       CONFIGURATION = [".autoproj/config.yml", "autoproj", ".autoproj/remotes"].freeze
 
       def self.default_dir
-        base = ENV.fetch("XDG_CACHE_HOME", nil)
-        base = File.join(Dir.home, ".cache") if base.nil? || base.empty?
-        File.join(base, "relspec", "catalog")
-      rescue ArgumentError
-        nil
+        CacheDir.for("catalog")
       end
 
       def initialize(dir = self.class.default_dir)
