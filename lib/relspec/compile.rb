@@ -17,15 +17,17 @@ module Relspec
     Result = Struct.new(:release, :written, :unchanged, :published, :lock_path, :lock_changed, :osdeps_written,
                         keyword_init: true)
 
-    def self.run(path, out:, jobs: 2, timeout: 10)
-      new(path, out, jobs, timeout).run
+    # +progress+ is called with (done, total) after each source package.
+    def self.run(path, out:, jobs: 2, timeout: 10, progress: nil)
+      new(path, out, jobs, timeout, progress).run
     end
 
-    def initialize(path, out, jobs, timeout)
+    def initialize(path, out, jobs, timeout, progress = nil)
       @path = path
       @out = out
       @jobs = [jobs.to_i, 1].max
       @timeout = timeout
+      @progress = progress
     end
 
     def run
@@ -196,7 +198,10 @@ module Relspec
             dir, package = job
             begin
               changed = package.emit(dir)
-              lock.synchronize { (changed ? written : unchanged) << dir }
+              lock.synchronize do
+                (changed ? written : unchanged) << dir
+                @progress&.call(written.size + unchanged.size, jobs.size)
+              end
             rescue InvalidInput => e
               lock.synchronize { errors.concat(e.diagnostics) }
             rescue StandardError => e # re-raised below, in the main thread, where errors become messages

@@ -7,16 +7,17 @@ module Relspec
     # `relspec compile SPEC`: the source packages of everything the release
     # builds, plan.yml per target, the lock and the osdeps files.
     class CompileCommand
-      def initialize(path:, out:, jobs:, timeout:, out_io:)
+      def initialize(path:, out:, jobs:, timeout:, out_io:, progress_io: nil)
         @path = path
         @out = out
         @jobs = jobs
         @timeout = timeout
         @io = out_io
+        @progress_io = progress_io
       end
 
       def call
-        result = Compile.run(@path, out: @out, jobs: @jobs, timeout: @timeout)
+        result = Compile.run(@path, out: @out, jobs: @jobs, timeout: @timeout, progress: progress_bar)
         if result.written.empty? && !result.lock_changed && result.osdeps_written.zero?
           @io.puts("#{result.release}: nothing changed (#{result.unchanged.size} source packages up to date)")
         else
@@ -25,6 +26,21 @@ module Relspec
                    "#{result.published.size} already published; #{result.lock_changed ? 'wrote' : 'kept'} #{result.lock_path}")
         end
         0
+      end
+
+      private
+
+      # A bar on a terminal (stderr), nothing otherwise or with --quiet.
+      def progress_bar
+        return nil unless @progress_io&.tty?
+
+        require "tty-progressbar"
+        bar = nil
+        lambda do |done, total|
+          bar ||= TTY::ProgressBar.new("source packages [:bar] :current/:total", total: total, output: @progress_io,
+                                                                                  width: 30, clear: true)
+          bar.current = done
+        end
       end
     end
   end

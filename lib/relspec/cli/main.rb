@@ -85,7 +85,7 @@ module Relspec
       def compile(path)
         require_relative "compile_command"
         finish CompileCommand.new(path: path, out: options[:out], jobs: options[:jobs], timeout: options[:timeout],
-                                  out_io: $stdout).call
+                                  out_io: $stdout, progress_io: options[:quiet] ? nil : $stderr).call
       end
 
       desc "why SPEC PACKAGE", "Explain one package's decision, with its full cause chain"

@@ -156,3 +156,21 @@ RSpec.describe "relspec compile of a selected metapackage" do
     end
   end
 end
+
+RSpec.describe "compile progress" do
+  it "reports each emitted source package, and stays silent when stderr is not a terminal" do
+    Dir.mktmpdir("relspec-progress") do |dir|
+      fixture = ReleaseFixture.new(dir)
+      fixture.spec("prog", "select: [base/logging]\ntargets: { bionic: [amd64], buster: [amd64] }\n" \
+                           "maintainer: Demo <demo@example.org>\n", workspace: :checkouts)
+      calls = []
+      require "relspec/compile"
+      Relspec::Compile.run(File.join(dir, "specs", "prog.yml"), out: File.join(dir, "out"),
+                           progress: ->(done, total) { calls << [done, total] })
+      expect(calls.sort).to eq([[1, 4], [2, 4], [3, 4], [4, 4]])
+      run = relspec("compile", "specs/prog.yml", "--out", "out2", chdir: dir)
+      expect(run.exit_code).to eq(0), run.stderr
+      expect(run.stderr).to eq("")
+    end
+  end
+end
