@@ -20,6 +20,11 @@ module Relspec
       # Any problem reading the repository; the message names the URL.
       class Error < StandardError; end
 
+      # The repository has no such codename, or no index for that
+      # architecture: for a release's own repository that only means nothing
+      # was published there yet.
+      class Missing < Error; end
+
       COMPRESSIONS = [["Packages.xz", :xz], ["Packages.gz", :gzip], ["Packages", :none]].freeze
 
       attr_reader :fetcher
@@ -46,7 +51,7 @@ module Relspec
         directory = "#{component}/binary-#{arch}"
         listed = COMPRESSIONS.map { |file, kind| ["#{directory}/#{file}", kind] }.select { |path, _| release.checksum(path) }
         if listed.empty?
-          raise Error, "#{url}/dists/#{codename}/Release lists no #{directory}/Packages index " \
+          raise Missing, "#{url}/dists/#{codename}/Release lists no #{directory}/Packages index " \
                        "(architectures: #{release.architectures.join(' ')})"
         end
 
@@ -66,7 +71,7 @@ module Relspec
             [clearsigned_content(in_release, "#{url}/#{base}/InRelease"), in_release]
           else
             plain = @fetcher.fetch("#{base}/Release")
-            raise Error, "#{url} has no distribution #{codename} (no #{base}/InRelease or Release)" unless plain
+            raise Missing, "#{url} has no distribution #{codename} (no #{base}/InRelease or Release)" unless plain
 
             [detached_content(plain, base), plain]
           end

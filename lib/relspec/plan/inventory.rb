@@ -73,8 +73,8 @@ module Relspec
         indices = {}
         targets.each do |target|
           indices[target] = repository.packages(target.codename, target.arch)
-        rescue Apt::Repository::Error => e
-          raise unless e.message.include?("has no distribution") || e.message.include?("lists no")
+        rescue Apt::Repository::Missing
+          next
         end
         new(indices)
       end
