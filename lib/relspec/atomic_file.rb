@@ -8,6 +8,15 @@ module Relspec
   module AtomicFile
     module_function
 
+    # Writes only when the content differs, so an unchanged output keeps
+    # its mtime (and make-like tools see nothing to do). True if written.
+    def update(path, content)
+      return false if File.file?(path) && File.binread(path) == content
+
+      write(path, content)
+      true
+    end
+
     def write(path, content)
       dir = File.dirname(path)
       temporary = File.join(dir, ".#{File.basename(path)}.#{Process.pid}.tmp")

@@ -36,7 +36,7 @@ module Relspec
       require_maintainer
       require_workspace
       @catalog = @planned.release_catalog.catalog
-      @previous = Plan::Lock.builds(@planned.lock_path)
+      @previous = @planned.recorded
       @project_root = Plan.project_root(@path)
       decisions, jobs, published = prepare
       written, unchanged = emit(jobs)
@@ -242,7 +242,7 @@ module Relspec
         end
         dir = File.join(@out, @effective.release, "#{target.codename}-#{target.arch}")
         FileUtils.mkdir_p(dir)
-        write_if_changed(File.join(dir, "plan.yml"),
+        AtomicFile.update(File.join(dir, "plan.yml"),
                          Yaml::Writer.dump("release" => plan.release, "target" => target.to_s, "builds" => entries))
       end
     end
@@ -252,15 +252,8 @@ module Relspec
       dir = File.join(File.dirname(@planned.lock_path), "osdeps")
       FileUtils.mkdir_p(dir)
       files.count do |arch, text|
-        write_if_changed(File.join(dir, Osdeps::Renderer.file_name(@effective.release, arch)), text)
+        AtomicFile.update(File.join(dir, Osdeps::Renderer.file_name(@effective.release, arch)), text)
       end
-    end
-
-    def write_if_changed(path, text)
-      return false if File.file?(path) && File.binread(path) == text
-
-      AtomicFile.write(path, text)
-      true
     end
   end
 end

@@ -14,7 +14,8 @@ module Relspec
   # build or published, with causes; recorded in releases/<r>/lock.yml.
   module Plan
     # Everything one planning run produced.
-    Result = Struct.new(:resolution, :plan, :lock_path, :spec_digest, :own, :release_catalog, :ancestors,
+    # +recorded+: the builds the existing lock records (Lock.builds), read once.
+    Result = Struct.new(:resolution, :plan, :lock_path, :spec_digest, :own, :release_catalog, :ancestors, :recorded,
                         keyword_init: true) do
       def lock_text
         Lock.dump(plan, spec_digest)
@@ -35,9 +36,11 @@ module Relspec
       inventory = Inventory.read(ancestors, targets)
       own = read_own(resolution, targets, fetcher_options, cache)
       lock_path = Lock.path(project_root(path), effective.release)
+      recorded = Lock.builds(lock_path)
       planner = Planner.new(release_catalog: release_catalog, effective: effective, spec_file: resolution.spec_file,
-                            ancestors: ancestors, inventory: inventory, own: own, revisions: Lock.revisions(lock_path))
-      Result.new(resolution: resolution, plan: with_recorded_digests(planner.plan, lock_path), lock_path: lock_path,
+                            ancestors: ancestors, inventory: inventory, own: own, revisions: Lock.revisions(recorded))
+      Result.new(resolution: resolution, plan: with_recorded_digests(planner.plan, recorded), lock_path: lock_path,
+                 recorded: recorded,
                  spec_digest: Lock.spec_digest(effective), own: own, release_catalog: release_catalog,
                  ancestors: ancestors)
     end
@@ -55,8 +58,7 @@ module Relspec
     # The debian/ digests the lock recorded (compile writes them) stay with
     # the builds whose version did not change, so that writing the lock from
     # `plan --write` never loses what decides the next revision.
-    def self.with_recorded_digests(plan, lock_path)
-      recorded = Lock.builds(lock_path)
+    def self.with_recorded_digests(plan, recorded)
       return plan if recorded.empty?
 
       targets = plan.targets.to_h do |target, decisions|

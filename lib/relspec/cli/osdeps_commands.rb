@@ -38,8 +38,7 @@ module Relspec
         FileUtils.mkdir_p(dir)
         files.each do |arch, text|
           target = File.join(dir, Osdeps::Renderer.file_name(effective.release, arch))
-          changed = !(File.file?(target) && File.binread(target) == text)
-          AtomicFile.write(target, text) if changed
+          changed = AtomicFile.update(target, text)
           $stderr.puts("#{changed ? 'wrote' : 'unchanged'} #{target}")
         end
         missing.each { |line| $stderr.puts("missing from the repository: #{line}") }

@@ -40,11 +40,7 @@ module Relspec
 
       def write(path, plan, spec_digest)
         FileUtils.mkdir_p(File.dirname(path))
-        text = dump(plan, spec_digest)
-        return false if File.file?(path) && File.binread(path) == text
-
-        AtomicFile.write(path, text)
-        true
+        AtomicFile.update(path, dump(plan, spec_digest))
       end
 
       def ancestors(plan)
@@ -79,11 +75,11 @@ module Relspec
         document.ok? && data.is_a?(Hash) && data[FORMAT_KEY] == FORMAT_VERSION ? data : nil
       end
 
-      # "codename/arch" => package => {upstream version => revision} from an
-      # existing lock, so that a package keeps its revision on each target from
+      # "codename/arch" => package => {upstream version => revision} from the
+      # builds of an existing lock (see builds), so that a package keeps its revision on each target from
       # plan to plan (compile decides revisions per target).
-      def revisions(path)
-        builds(path).transform_values do |decisions|
+      def revisions(builds)
+        builds.transform_values do |decisions|
           decisions.each_with_object({}) do |(name, decision), out|
             upstream, revision = decision["version"].to_s.match(/\A(.*)-(\d+)~[a-z0-9-]+\z/)&.captures
             out[name] = { upstream => revision.to_i } if upstream
