@@ -3,6 +3,7 @@
 require_relative "spec"
 require_relative "catalog/release_catalog"
 require_relative "catalog/cache"
+require_relative "display_path"
 require_relative "plan/target"
 require_relative "plan/ancestor"
 require_relative "plan/inventory"
@@ -48,11 +49,7 @@ module Relspec
     # The folder above the spec's folder (where releases/ and overlays/ are),
     # as the user would write it.
     def self.project_root(path)
-      root = File.dirname(File.dirname(File.expand_path(path)))
-      cwd = Dir.pwd
-      return "." if root == cwd
-
-      root.start_with?("#{cwd}/") ? root.delete_prefix("#{cwd}/") : root
+      DisplayPath.of(File.dirname(File.dirname(File.expand_path(path))))
     end
 
     # The debian/ digests the lock recorded (compile writes them) stay with

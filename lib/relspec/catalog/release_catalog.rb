@@ -4,6 +4,7 @@ require_relative "source"
 require_relative "pinning"
 require_relative "selection"
 require_relative "metapackages"
+require_relative "../display_path"
 
 module Relspec
   class Catalog
@@ -44,13 +45,7 @@ module Relspec
                                                 location: spec_file.location(["release"]),
                                                 hint: "add `workspace:` (an autoproj workspace or a catalog snapshot)")]
         end
-        File.expand_path(path, File.dirname(spec_file.path)).then { |full| relative_to_cwd(full) }
-      end
-
-      # Messages name paths as the user would type them.
-      def self.relative_to_cwd(path)
-        cwd = "#{Dir.pwd}/"
-        path.start_with?(cwd) ? path.delete_prefix(cwd) : path
+        DisplayPath.of(File.expand_path(path, File.dirname(spec_file.path)))
       end
 
       def self.select_all(catalog, effective, spec_file, workspace)
@@ -71,7 +66,7 @@ module Relspec
         selections
       end
 
-      private_class_method :workspace_path, :relative_to_cwd, :select_all
+      private_class_method :workspace_path, :select_all
 
       def initialize(catalog, names, workspace)
         @catalog = catalog
