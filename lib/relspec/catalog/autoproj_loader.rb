@@ -71,27 +71,21 @@ module Relspec
 
       module_function
 
-      # Loads +root+ once per target: {"catalog" => data} or, for a problem
-      # of the workspace, {"error" => {rule, message, file, line, hint}}.
-      def answer_for(root, targets)
+      # Loads +root+ once per target into plain data. Every problem of the
+      # workspace, autoproj's included, is raised as a WorkspaceProblem.
+      def load(root, targets)
         install_patches
-        { "catalog" => load_all(root, targets) }
-      rescue WorkspaceProblem => e
-        problem(e.rule, e.message, file: e.file, line: e.line, hint: e.hint)
+        load_all(root, targets)
       rescue Autoproj::ConfigError, Autoproj::PackageNotFound, Autobuild::Exception, Autoproj::InputError => e
-        autoproj_problem(e)
+        raise autoproj_problem(e)
       rescue ArgumentError => e
         # autoproj reports a package set folder that does not exist this way
         raise unless (missing = e.message[/'([^']+)' is neither a remote source specification, nor an existing local directory/, 1])
 
-        problem("missing-package-set", "package set #{missing} does not exist", file: "autoproj/manifest",
-                                                                               hint: "check `package_sets:` in autoproj/manifest, or run `autoproj update`")
+        raise WorkspaceProblem.new("missing-package-set", "package set #{missing} does not exist", file: "autoproj/manifest",
+                                                                                                  hint: "check `package_sets:` in autoproj/manifest, or run `autoproj update`")
       ensure
         reset_global_state
-      end
-
-      def problem(rule, message, file: nil, line: nil, hint: nil)
-        { "error" => { "rule" => rule, "message" => message, "file" => file, "line" => line, "hint" => hint } }
       end
 
       def autoproj_problem(error)
@@ -99,10 +93,10 @@ module Relspec
         if (invalid = message.match(/invalid (\S+manifest\.xml): (.*)/m))
           line = invalid[2][/Line: (\d+)/, 1]&.to_i
           reason = invalid[2].lines.first.strip
-          return problem("package-manifest", "broken manifest.xml: #{reason}", file: invalid[1], line: line,
-                                                                                 hint: "fix the XML of the package's manifest.xml")
+          return WorkspaceProblem.new("package-manifest", "broken manifest.xml: #{reason}", file: invalid[1], line: line,
+                                                                                             hint: "fix the XML of the package's manifest.xml")
         end
-        problem("autoproj", message.lines.first(6).join.strip, hint: "autoproj could not load the workspace")
+        WorkspaceProblem.new("autoproj", message.lines.first(6).join.strip, hint: "autoproj could not load the workspace")
       end
 
       def install_patches

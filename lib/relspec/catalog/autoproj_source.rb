@@ -1,6 +1,5 @@
 # frozen_string_literal: true
 
-require "json"
 require_relative "../catalog"
 require_relative "../diagnostic"
 require_relative "../error"
@@ -50,9 +49,9 @@ module Relspec
         require_relative "autoproj_loader"
         saved = $stdout
         $stdout = $stderr
-        answer = AutoprojLoader.answer_for(File.expand_path(@root), operating_systems)
-        report_problem(answer["error"]) if answer["error"]
-        answer.fetch("catalog")
+        AutoprojLoader.load(File.expand_path(@root), operating_systems)
+      rescue AutoprojLoader::WorkspaceProblem => e
+        report_problem(e)
       ensure
         $stdout = saved if saved
       end
@@ -64,10 +63,10 @@ module Relspec
       end
 
       def report_problem(problem)
-        file = problem["file"] && File.expand_path(problem["file"], @root)
+        file = problem.file && File.expand_path(problem.file, @root)
         file = file.sub("#{File.expand_path(@root)}/", "#{@root}/") if file
-        location = file ? Location.new(file: file, line: problem["line"], column: problem["line"] && 1).freeze : Location.file_only(@root)
-        raise InvalidInput, [Diagnostic.error(problem["rule"], problem["message"], location: location, hint: problem["hint"])]
+        location = file ? Location.new(file: file, line: problem.line, column: problem.line && 1).freeze : Location.file_only(@root)
+        raise InvalidInput, [Diagnostic.error(problem.rule, problem.message, location: location, hint: problem.hint)]
       end
 
       def fail_with(rule, message, hint)
