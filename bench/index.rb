@@ -11,6 +11,7 @@
 # ≤ 2× for a full parse.
 require "open3"
 require "tmpdir"
+require_relative "timing"
 $LOAD_PATH.unshift(File.expand_path("../lib", __dir__))
 require "relspec/apt/packages_scanner"
 require "relspec/apt/package_index"
@@ -54,13 +55,8 @@ def python_seconds(mode, path)
   Float(out)
 end
 
-def ruby_seconds
-  times = Array.new(RUNS) do
-    started = Process.clock_gettime(Process::CLOCK_MONOTONIC)
-    yield
-    Process.clock_gettime(Process::CLOCK_MONOTONIC) - started
-  end
-  times.sort[RUNS / 2]
+def ruby_seconds(&block)
+  Timing.median(RUNS, &block)
 end
 
 Dir.mktmpdir("relspec-bench-index") do |dir|

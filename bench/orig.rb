@@ -9,6 +9,7 @@
 require "fileutils"
 require "open3"
 require "tmpdir"
+require_relative "timing"
 $LOAD_PATH.unshift(File.expand_path("../lib", __dir__))
 require "relspec/debian/orig_tarball"
 
@@ -38,13 +39,6 @@ def make_tree(dir)
   [index, total]
 end
 
-def median(runs) = runs.sort[runs.size / 2]
-
-def seconds
-  started = Process.clock_gettime(Process::CLOCK_MONOTONIC)
-  yield
-  Process.clock_gettime(Process::CLOCK_MONOTONIC) - started
-end
 
 Dir.mktmpdir("relspec-bench-orig") do |dir|
   tree = File.join(dir, "tree")
@@ -52,18 +46,14 @@ Dir.mktmpdir("relspec-bench-orig") do |dir|
   files, bytes = make_tree(tree)
   commit = Open3.capture2("git", "-C", tree, "rev-parse", "HEAD").first.strip
   mtime = Time.utc(2020, 6, 1)
-  ours = median(Array.new(RUNS) do
-    seconds do
-      Relspec::Debian::OrigTarball.write(File.join(dir, "ours.tar.gz"), checkout: tree, commit: commit, prefix: "pkg-1.0",
-                                                                        mtime: mtime)
-    end
-  end)
-  reference = median(Array.new(RUNS) do
-    seconds do
-      system("tar --sort=name --mtime=@#{mtime.to_i} --owner=0 --group=0 --numeric-owner --exclude-vcs -C #{tree} " \
-             "-cf - . | gzip -n > #{dir}/reference.tar.gz", exception: true)
-    end
-  end)
+  ours = Timing.median(RUNS) do
+    Relspec::Debian::OrigTarball.write(File.join(dir, "ours.tar.gz"), checkout: tree, commit: commit, prefix: "pkg-1.0",
+                                                                      mtime: mtime)
+  end
+  reference = Timing.median(RUNS) do
+    system("tar --sort=name --mtime=@#{mtime.to_i} --owner=0 --group=0 --numeric-owner --exclude-vcs -C #{tree} " \
+           "-cf - . | gzip -n > #{dir}/reference.tar.gz", exception: true)
+  end
   # The same call twice gives the same bytes (the property the tests check).
   Relspec::Debian::OrigTarball.write(File.join(dir, "again.tar.gz"), checkout: tree, commit: commit, prefix: "pkg-1.0",
                                                                      mtime: mtime)

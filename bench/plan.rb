@@ -13,6 +13,7 @@
 require "digest"
 require "fileutils"
 require "tmpdir"
+require_relative "timing"
 require "zlib"
 $LOAD_PATH.unshift(File.expand_path("../lib", __dir__))
 require "relspec/plan"
@@ -81,12 +82,7 @@ SIZES.each do |count|
   Dir.mktmpdir("relspec-bench-plan") do |dir|
     spec = setup(dir, count)
     result = nil
-    times = Array.new(RUNS) do
-      started = Process.clock_gettime(Process::CLOCK_MONOTONIC)
-      result = Relspec::Plan.compute(spec, cache_dir: nil)
-      Process.clock_gettime(Process::CLOCK_MONOTONIC) - started
-    end
-    median = times.sort[RUNS / 2]
+    median = Timing.median(RUNS) { result = Relspec::Plan.compute(spec, cache_dir: nil) }
     base ||= [count, median]
     growth = (median / base[1]) / (count.to_f / base[0])
     decisions = result.plan.targets.values.sum(&:size)

@@ -12,6 +12,7 @@ require "digest"
 require "fileutils"
 require "open3"
 require "tmpdir"
+require_relative "timing"
 require "zlib"
 $LOAD_PATH.unshift(File.expand_path("../lib", __dir__))
 require "relspec/apt/package_index"
@@ -57,13 +58,6 @@ def apt_options(dir)
    "-o", "APT::Architecture=amd64", "-o", "APT::Architectures::=amd64"]
 end
 
-def median(times) = times.sort[times.size / 2]
-
-def time
-  started = Process.clock_gettime(Process::CLOCK_MONOTONIC)
-  yield
-  Process.clock_gettime(Process::CLOCK_MONOTONIC) - started
-end
 
 Dir.mktmpdir("relspec-bench-select") do |dir|
   packages_gz = write_repository(dir)
@@ -76,22 +70,18 @@ Dir.mktmpdir("relspec-bench-select") do |dir|
   entries = blacklisted.map { |i| Relspec::Osdeps::BlacklistFile::Entry.new(Relspec::Spec::PackagePattern.parse("pkg/p#{i}"), "bench") }
 
   ours = nil
-  relspec = median(Array.new(RUNS) do
-    time do
-      index = Relspec::Apt::PackageIndex.parse(Zlib.gunzip(File.binread(packages_gz)))
-      ours = Relspec::Osdeps::Selection.new(mapping, [index], entries)
-    end
-  end)
+  relspec = Timing.median(RUNS) do
+    index = Relspec::Apt::PackageIndex.parse(Zlib.gunzip(File.binread(packages_gz)))
+    ours = Relspec::Osdeps::Selection.new(mapping, [index], entries)
+  end
 
   theirs = nil
-  peer = median(Array.new(RUNS) do
-    time do
-      theirs = blacklisted.flat_map do |i|
-        output, = Open3.capture2("apt-cache", *options, "rdepends", "--recurse", deb(i))
-        output.lines.map(&:strip).grep(/\Arock-/)
-      end.uniq
-    end
-  end)
+  peer = Timing.median(RUNS) do
+    theirs = blacklisted.flat_map do |i|
+      output, = Open3.capture2("apt-cache", *options, "rdepends", "--recurse", deb(i))
+      output.lines.map(&:strip).grep(/\Arock-/)
+    end.uniq
+  end
 
   disabled = ours.inactive.size
   puts "#{COUNT} packages, #{BLACKLISTED} blacklisted low-level packages, #{disabled} disabled in all"

@@ -9,10 +9,10 @@
 #
 #   bundle exec ruby bench/validate.rb [RUNS]
 
-require "benchmark"
 require "fileutils"
 require "rbconfig"
 require "tmpdir"
+require_relative "timing"
 
 ROOT = File.expand_path("..", __dir__)
 RUNS = Integer(ARGV.fetch(0, "9"))
@@ -22,12 +22,9 @@ RUNS = Integer(ARGV.fetch(0, "9"))
 ENVIRONMENT = { "RUBYOPT" => nil, "BUNDLE_GEMFILE" => File.join(ROOT, "Gemfile") }.freeze
 
 def median_seconds(command, chdir:)
-  times = Array.new(RUNS) do
-    Benchmark.realtime do
-      system(ENVIRONMENT, *command, chdir: chdir, out: File::NULL, err: File::NULL) or raise "failed: #{command.join(' ')}"
-    end
+  Timing.median(RUNS) do
+    system(ENVIRONMENT, *command, chdir: chdir, out: File::NULL, err: File::NULL) or raise "failed: #{command.join(' ')}"
   end
-  times.sort[RUNS / 2]
 end
 
 # A realistic large hierarchy: 3 levels, 4 targets, 400 pins and 100
@@ -69,13 +66,10 @@ end
 $LOAD_PATH.unshift(File.join(ROOT, "lib"))
 require "relspec"
 def in_process_seconds(dir)
-  times = Array.new(RUNS) do
-    Benchmark.realtime do
-      library = Relspec::Spec::Library.new(dir)
-      library.paths.each { |path| Relspec::Spec::Resolution.of(library, path) }
-    end
+  Timing.median(RUNS) do
+    library = Relspec::Spec::Library.new(dir)
+    library.paths.each { |path| Relspec::Spec::Resolution.of(library, path) }
   end
-  times.sort[RUNS / 2]
 end
 rows[0] << in_process_seconds(File.join(ROOT, "specs"))
 Dir.mktmpdir("relspec-bench") { |dir| rows[1] << in_process_seconds(write_large_hierarchy(dir)) }
