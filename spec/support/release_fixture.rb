@@ -29,6 +29,13 @@ class ReleaseFixture
     "specs/#{name}.yml"
   end
 
+  # A release without ancestors built from the workspace's checkouts:
+  # what most compile tests need. Returns the spec's path below root.
+  def standalone(name, select:, targets:)
+    spec(name, "select: [#{select.join(', ')}]\ntargets: { #{targets} }\nmaintainer: Demo <demo@example.org>\n",
+         workspace: :checkouts)
+  end
+
   # The version relspec gives +package+ on +codename+ (revision 1), or the
   # one an ancestor built from an older commit (+commit_time+).
   def version(package, codename, commit_time: nil)

@@ -11,8 +11,7 @@ RSpec.describe "building a compiled package against its dependency" do
     Dir.mktmpdir("relspec-build-against") do |dir|
       @dir = dir
       @fixture = ReleaseFixture.new(dir)
-      @fixture.spec("solo", "select: [base/logging]\ntargets: { bionic: [amd64] }\n" \
-                            "maintainer: Demo Packaging <demo@example.org>\n", workspace: :checkouts)
+      @fixture.standalone("solo", select: ["base/logging"], targets: "bionic: [amd64]")
       example.run
     ensure
       system("dpkg", "--purge", "rock-solo-base-cmake", out: File::NULL, err: File::NULL)

@@ -134,8 +134,7 @@ RSpec.describe "relspec compile of a selected metapackage" do
   it "emits a metapackage depending on the members, which builds and resolves through osdeps" do
     Dir.mktmpdir("relspec-meta") do |dir|
       fixture = ReleaseFixture.new(dir)
-      fixture.spec("meta", "select: [demo.core]\ntargets: { bionic: [amd64] }\nmaintainer: Demo <demo@example.org>\n",
-                   workspace: :checkouts)
+      fixture.standalone("meta", select: ["demo.core"], targets: "bionic: [amd64]")
       run = relspec("compile", "specs/meta.yml", "--out", "out", chdir: dir)
       expect(run.exit_code).to eq(0), run.stderr
       dsc = Dir.glob(File.join(dir, "out", "meta", "bionic-amd64", "rock-meta-meta-demo.core", "*.dsc")).first
@@ -161,8 +160,7 @@ RSpec.describe "compile progress" do
   it "reports each emitted source package, and stays silent when stderr is not a terminal" do
     Dir.mktmpdir("relspec-progress") do |dir|
       fixture = ReleaseFixture.new(dir)
-      fixture.spec("prog", "select: [base/logging]\ntargets: { bionic: [amd64], buster: [amd64] }\n" \
-                           "maintainer: Demo <demo@example.org>\n", workspace: :checkouts)
+      fixture.standalone("prog", select: ["base/logging"], targets: "bionic: [amd64], buster: [amd64]")
       calls = []
       require "relspec/compile"
       Relspec::Compile.run(File.join(dir, "specs", "prog.yml"), out: File.join(dir, "out"),

@@ -89,8 +89,7 @@ RSpec.describe "relspec compile with per-architecture overlays" do
   it "applies @<arch>/ overlays to that architecture only, over the common ones" do
     Dir.mktmpdir("relspec-arch-overlay") do |dir|
       fixture = ReleaseFixture.new(dir)
-      fixture.spec("arch", "select: [base/cmake]\ntargets: { bionic: [amd64, arm64] }\nmaintainer: Demo <demo@example.org>\n",
-                   workspace: :checkouts)
+      fixture.standalone("arch", select: ["base/cmake"], targets: "bionic: [amd64, arm64]")
       overlay = File.join(dir, "overlays", "base", "cmake")
       FileUtils.mkdir_p([File.join(overlay, "debian"), File.join(overlay, "@arm64", "debian")])
       File.write(File.join(overlay, "debian", "NOTE"), "common\n")
@@ -117,8 +116,7 @@ RSpec.describe "the lock between plan and compile" do
   it "keeps the debian/ digests through plan --write, so a later debian/ change still raises the revision" do
     Dir.mktmpdir("relspec-lock-digests") do |dir|
       fixture = ReleaseFixture.new(dir)
-      fixture.spec("rel", "select: [base/cmake]\ntargets: { bionic: [amd64] }\nmaintainer: Demo <demo@example.org>\n",
-                   workspace: :checkouts)
+      fixture.standalone("rel", select: ["base/cmake"], targets: "bionic: [amd64]")
       expect(relspec("compile", "specs/rel.yml", "--out", "out", chdir: dir).exit_code).to eq(0)
       lock = File.join(dir, "releases", "rel", "lock.yml")
       digests = File.read(lock).scan(/debian_digest: (\h+)/).flatten
