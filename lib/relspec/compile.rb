@@ -40,7 +40,7 @@ module Relspec
       @project_root = Plan.project_root(@path)
       decisions, jobs, published = prepare
       written, unchanged = emit(jobs)
-      plan = with_decisions(decisions)
+      plan = @planned.plan.with_targets(decisions)
       write_build_plans(plan)
       lock_changed = Plan::Lock.write(@planned.lock_path, plan, @planned.spec_digest)
       Result.new(release: @effective.release, written: written, unchanged: unchanged, published: published,
@@ -220,12 +220,6 @@ module Relspec
       queue.pop(true)
     rescue ThreadError
       nil
-    end
-
-    def with_decisions(decisions)
-      plan = @planned.plan
-      Plan::ReleasePlan.new(release: plan.release, targets: decisions, packages: plan.packages,
-                            release_digests: plan.release_digests, warnings: plan.warnings, notes: plan.notes)
     end
 
     # <out>/<release>/<codename>-<arch>/plan.yml: the builds in dependency

@@ -66,8 +66,7 @@ module Relspec
           Decision.new(**decision.each_pair.to_h, debian_digest: entry["debian_digest"]).freeze
         end]
       end
-      ReleasePlan.new(release: plan.release, targets: targets, packages: plan.packages,
-                      release_digests: plan.release_digests, warnings: plan.warnings, notes: plan.notes)
+      plan.with_targets(targets)
     end
 
     def self.read_own(resolution, targets, fetcher_options, cache)

@@ -5,8 +5,8 @@ require_relative "workspace_builder"
 # The demo workspace: what the tests load and what examples/ ships. A small
 # Rock-like stack covering every build type relspec packages, a metapackage,
 # an optional dependency, an excluded and an ignored package, and OS
-# dependencies that differ between bionic and buster (eigen does not exist on
-# buster).
+# dependencies that differ between bionic and buster (the demo pretends that
+# buster has no motif, so tools/legacy cannot exist there).
 module DemoWorkspace
   OSDEPS = <<~YAML
     boost:
@@ -17,10 +17,12 @@ module DemoWorkspace
         buster: libboost1.67-all-dev
         default: libboost-all-dev
     eigen:
-      ubuntu: libeigen3-dev
+      ubuntu,debian: libeigen3-dev
+    motif:
+      ubuntu: libmotif-dev
       debian:
         buster: nonexistent
-        default: libeigen3-dev
+        default: libmotif-dev
     yaml-cpp:
       debian,ubuntu: libyaml-cpp-dev
     nokogiri: gem
@@ -43,7 +45,7 @@ module DemoWorkspace
     "drivers/iodrivers_base" => [:cmake, "2020-06-03T09:15:00Z", "1.0", ["base/types", "base/logging"], [], ["boost"]],
     "tools/orocos.rb" => [:ruby, "2020-06-05T16:45:00Z", "0.9", ["base/types", "tools/unused"], [],
                           %w[nokogiri qt5-tools ruby]],
-    "tools/legacy" => [:autotools, "2019-11-11T11:11:11Z", "0.1", [], [], ["yaml-cpp"]],
+    "tools/legacy" => [:autotools, "2019-11-11T11:11:11Z", "0.1", [], [], %w[motif yaml-cpp]],
     "data/models" => [:import, "2020-04-01T00:00:00Z", "3", [], [], []],
     "drivers/old_driver" => [:cmake, "2018-01-01T00:00:00Z", "0.1", ["base/types"], [], []]
   }.freeze

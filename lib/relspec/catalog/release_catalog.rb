@@ -15,8 +15,9 @@ module Relspec
     class ReleaseCatalog
       attr_reader :catalog, :selections, :workspace
 
-      # The selected names on one codename, with their packages.
-      Selected = Struct.new(:names, :catalog) do
+      # The selected names on one codename, with their packages, and the
+      # selected packages that cannot exist there (name => Selection::Unavailable).
+      Selected = Struct.new(:names, :catalog, :unavailable) do
         def packages
           names.map { |name| catalog.package(name) }
         end
@@ -34,8 +35,9 @@ module Relspec
         pins = effective["pins"] || {}
         pinned = Pinning.apply(catalog, pins, root: root,
                                               locate: ->(name) { effective.pin_origin(name)&.location })
-        catalog, names = Metapackages.add(pinned, effective["select"], select_all(pinned, effective, spec_file, workspace))
-        new(catalog, names, workspace)
+        selections = select_all(pinned, effective, spec_file, workspace)
+        catalog, names = Metapackages.add(pinned, effective["select"], selections)
+        new(catalog, names, selections.transform_values(&:unavailable), workspace)
       end
 
       def self.workspace_path(spec_file, effective)
@@ -68,9 +70,9 @@ module Relspec
 
       private_class_method :workspace_path, :select_all
 
-      def initialize(catalog, names, workspace)
+      def initialize(catalog, names, unavailable, workspace)
         @catalog = catalog
-        @selections = names.transform_values { |list| Selected.new(list, catalog).freeze }.freeze
+        @selections = names.to_h { |codename, list| [codename, Selected.new(list, catalog, unavailable.fetch(codename)).freeze] }.freeze
         @workspace = workspace
         freeze
       end

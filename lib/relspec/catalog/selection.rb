@@ -9,8 +9,19 @@ module Relspec
     # The packages a release is made of: the spec's `select` (packages and
     # metapackages; default the workspace layout) and, recursively, their
     # dependencies, honouring autoproj's excluded and ignored packages.
+    #
+    # A package whose OS dependency is `nonexistent` on the codename cannot
+    # be built there, and neither can what requires it; autoproj excludes
+    # them the same way. They are left out of +names+ and kept in
+    # +unavailable+ with the reason, so a release can span distributions
+    # where part of the stack does not exist.
     class Selection
-      attr_reader :names, :roots
+      attr_reader :names, :roots, :unavailable
+
+      # Why a package is unavailable on the codename: its own +osdeps+
+      # marked nonexistent there, or a required +dependency+ that is
+      # unavailable itself.
+      Unavailable = Struct.new(:osdeps, :dependency, keyword_init: true)
 
       # +select+: names from the spec, or nil for the layout; +codename+: the
       # target whose OS dependencies must all resolve; +locate+: name =>
@@ -27,11 +38,12 @@ module Relspec
         @fallback = Location.file_only(workspace)
         @problems = []
         @roots = expand_roots(select || catalog.layout)
-        @names = closure(@roots)
-        @names.each { |name| check_buildable(@catalog.package(name)) }
+        selected = closure(@roots)
+        selected.each { |name| check_buildable(@catalog.package(name)) }
         raise InvalidInput, @problems unless @problems.empty?
 
-        @names.freeze
+        @unavailable = unavailable_among(selected).freeze
+        @names = (selected - @unavailable.keys).freeze
         freeze
       end
 
@@ -73,6 +85,28 @@ module Relspec
           queue.concat(package.optional_dependencies.reject { |dep| unavailable?(dep) || !@catalog.package?(dep) })
         end
         seen.keys.sort
+      end
+
+      # Breadth first from the packages with nonexistent OS dependencies
+      # along required (not optional) reverse dependencies, so each one
+      # names the nearest reason.
+      def unavailable_among(selected)
+        found = {}
+        selected.each do |name|
+          missing = @catalog.package(name).os_dependencies_for(@codename).nonexistent
+          found[name] = Unavailable.new(osdeps: missing).freeze unless missing.empty?
+        end
+        frontier = found.keys
+        until frontier.empty?
+          frontier = selected.reject { |name| found.key?(name) }.filter_map do |name|
+            dependency = @catalog.package(name).dependencies.sort.find { |dep| frontier.include?(dep) }
+            next unless dependency
+
+            found[name] = Unavailable.new(dependency: dependency).freeze
+            name
+          end
+        end
+        found.sort.to_h
       end
 
       def required(package)

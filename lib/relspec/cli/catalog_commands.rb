@@ -76,6 +76,10 @@ module Relspec
             commit = package.vcs.commit ? package.vcs.commit[0, 10] : package.vcs.tag || package.vcs.branch
             puts format("  %-32s %-9s %-10s %s", package.name, package.build_type, commit, package.commit_time)
           end
+          selection.unavailable.each do |name, reason|
+            why = reason.dependency ? "requires #{reason.dependency}" : "osdeps #{reason.osdeps.join(', ')} nonexistent"
+            puts format("  %-32s unavailable on #{codename}: %s", name, why)
+          end
         end
       end
     end

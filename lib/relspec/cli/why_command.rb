@@ -25,11 +25,22 @@ module Relspec
           raise Error, "#{@package} is not part of release #{plan.release}#{" (#{hint})" if hint}"
         end
 
-        targets.each { |target| @out.write(explain(target, plan.targets.fetch(target)[@package])) }
+        targets.each do |target|
+          gap = plan.unavailable.fetch(target)[@package]
+          @out.write(gap ? explain_gap(target, gap) : explain(target, plan.targets.fetch(target)[@package]))
+        end
         0
       end
 
       private
+
+      def explain_gap(target, cause)
+        "#{target}: #{@package} cannot be built there, because:\n#{steps(cause)}\n"
+      end
+
+      def steps(cause)
+        cause.chain.each_with_index.map { |step, depth| "#{'  ' * (depth + 1)}#{'└ ' if depth.positive?}#{step}" }.join("\n")
+      end
 
       def explain(target, decision)
         return "#{target}: #{@package} is not selected there\n" unless decision
@@ -39,8 +50,7 @@ module Relspec
           "#{target}: #{@package} is inherited from #{decision.ancestor} as #{decision.deb_name} #{decision.version}\n"
         else
           verb = decision.published? ? "was built here and is published" : "is built here"
-          chain = decision.cause.chain.each_with_index.map { |step, depth| "#{'  ' * (depth + 1)}#{'└ ' if depth.positive?}#{step}" }
-          "#{target}: #{@package} #{verb} as #{decision.deb_name} #{decision.version}, because:\n#{chain.join("\n")}\n"
+          "#{target}: #{@package} #{verb} as #{decision.deb_name} #{decision.version}, because:\n#{steps(decision.cause)}\n"
         end
       end
     end

@@ -2,10 +2,11 @@
 
 module Relspec
   module Plan
-    # Why a package is built in this release. Causes chain: a package rebuilt
-    # because one of its dependencies is rebuilt carries that dependency's
-    # cause, so every rebuild can be traced to a spec entry or a fact about
-    # the ancestors.
+    # Why a package is built in this release, or why it cannot exist on a
+    # target. Causes chain: a package rebuilt (or left out) because of one of
+    # its dependencies carries that dependency's cause, so every rebuild can
+    # be traced to a spec entry or a fact about the ancestors, and every gap
+    # to an osdeps entry.
     class Cause
       attr_reader :kind, :detail, :because
 
@@ -27,6 +28,16 @@ module Relspec
 
       def self.depends_on(package, cause)
         new(:depends_on, package, cause)
+      end
+
+      def self.nonexistent_osdeps(osdeps, codename)
+        plural = osdeps.size > 1
+        new(:nonexistent_osdeps, "#{plural ? 'osdeps' : 'osdep'} #{osdeps.join(', ')} #{plural ? 'are' : 'is'} " \
+                                 "nonexistent on #{codename}", nil)
+      end
+
+      def self.unavailable_dependency(package, cause)
+        new(:unavailable_dependency, package, cause)
       end
 
       def initialize(kind, detail, because)
@@ -53,12 +64,14 @@ module Relspec
         when :blacklisted then "blacklisted by #{detail}"
         when :pinned then "pinned to #{detail}"
         when :depends_on then "depends on #{detail}, which is rebuilt because #{because}"
+        when :nonexistent_osdeps then detail
+        when :unavailable_dependency then "depends on #{detail}, which is unavailable because #{because}"
         end
       end
 
       # One line per step, for the lock file and `relspec why`.
       def chain
-        kind == :depends_on ? ["depends on #{detail}", *because.chain] : [to_s]
+        because ? ["depends on #{detail}", *because.chain] : [to_s]
       end
     end
   end

@@ -28,7 +28,11 @@ module Relspec
           FORMAT_KEY => FORMAT_VERSION, "release" => plan.release, "spec_digest" => spec_digest,
           "ancestors" => ancestors(plan), "packages" => plan.packages.sort.to_h,
           "targets" => plan.targets.sort_by { |target, _| target.to_s }.to_h do |target, decisions|
-            [target.to_s, decisions.sort.to_h { |name, decision| [name, decision.to_h] }]
+            entries = decisions.transform_values(&:to_h)
+            plan.unavailable.fetch(target).each do |name, cause|
+              entries[name] = { "decision" => "unavailable", "causes" => cause.chain }
+            end
+            [target.to_s, entries.sort.to_h]
           end,
           "warnings" => plan.warnings.map(&:message), "notes" => plan.notes
         }
@@ -63,7 +67,7 @@ module Relspec
         return {} unless data
 
         data.fetch("targets", {}).transform_values do |decisions|
-          decisions.reject { |_, decision| decision["decision"] == "inherit" }
+          decisions.select { |_, decision| %w[build published].include?(decision["decision"]) }
         end
       end
 

@@ -47,8 +47,10 @@ module Relspec
         blacklist = blacklist_patterns
         targets = Target.all(@effective)
         decisions = targets.to_h { |target| [target, plan_target(target, blacklist)] }
-        ReleasePlan.new(release: @effective.release, targets: decisions, packages: package_records(decisions),
-                        release_digests: @inventory.release_digests, warnings: merged_warnings, notes: @notes.uniq.sort)
+        unavailable = targets.to_h { |target| [target, unavailable_on(target)] }
+        ReleasePlan.new(release: @effective.release, targets: decisions, packages: package_records(decisions, unavailable),
+                        release_digests: @inventory.release_digests, warnings: merged_warnings, notes: @notes.uniq.sort,
+                        unavailable: unavailable)
       end
 
       private
@@ -60,6 +62,23 @@ module Relspec
         causes = names.to_h { |name| [name, direct_cause(@catalog.package(name), target, providers[name], blacklist)] }.compact
         rebuild_dependents(names, causes)
         names.to_h { |name| [name, decide(@catalog.package(name), target, providers[name], causes[name])] }
+      end
+
+      # name => Cause for the selected packages the target cannot have.
+      def unavailable_on(target)
+        reasons = @selections.fetch(target.codename).unavailable
+        causes = {}
+        cause_of = lambda do |name|
+          causes[name] ||= begin
+            reason = reasons.fetch(name)
+            if reason.dependency
+              Cause.unavailable_dependency(reason.dependency, cause_of.call(reason.dependency))
+            else
+              Cause.nonexistent_osdeps(reason.osdeps, target.codename)
+            end
+          end
+        end
+        reasons.keys.sort.to_h { |name| [name, cause_of.call(name)] }
       end
 
       # [[ancestor, index entry], …] in search order.
@@ -206,8 +225,8 @@ module Relspec
         entries
       end
 
-      def package_records(decisions)
-        names = decisions.values.flat_map(&:keys).uniq.sort
+      def package_records(decisions, unavailable)
+        names = (decisions.values + unavailable.values).flat_map(&:keys).uniq.sort
         names.to_h do |name|
           package = @catalog.package(name)
           vcs = package.vcs

@@ -5,14 +5,16 @@ module Relspec
     # The decisions for every target of a release, with what was read to make
     # them; immutable. Lock (the file) and the renderers read from it.
     class ReleasePlan
-      attr_reader :release, :targets, :packages, :release_digests, :warnings, :notes
+      attr_reader :release, :targets, :unavailable, :packages, :release_digests, :warnings, :notes
 
-      # +targets+: Target => {package name => Decision}; +packages+: package
-      # name => source record; +release_digests+: [ancestor, codename] =>
-      # SHA256 of the Release file read.
-      def initialize(release:, targets:, packages:, release_digests:, warnings:, notes:)
+      # +targets+: Target => {package name => Decision}; +unavailable+:
+      # Target => {package name => Cause} for the selected packages that
+      # cannot exist there; +packages+: package name => source record;
+      # +release_digests+: [ancestor, codename] => SHA256 of the Release file read.
+      def initialize(release:, targets:, packages:, release_digests:, warnings:, notes:, unavailable: {})
         @release = release
         @targets = targets.freeze
+        @unavailable = targets.keys.to_h { |target| [target, unavailable.fetch(target, {}).freeze] }.freeze
         @packages = packages.freeze
         @release_digests = release_digests.freeze
         @warnings = warnings.freeze
@@ -27,7 +29,13 @@ module Relspec
       def counts(target)
         decisions = targets.fetch(target).values
         { inherit: decisions.count(&:inherit?), build: decisions.count(&:build?),
-          published: decisions.count(&:published?) }
+          published: decisions.count(&:published?), unavailable: unavailable.fetch(target).size }
+      end
+
+      # Returns the same plan with other decisions (compile settles versions).
+      def with_targets(targets)
+        ReleasePlan.new(release: release, targets: targets, packages: packages, release_digests: release_digests,
+                        warnings: warnings, notes: notes, unavailable: unavailable)
       end
 
       def builds(target)

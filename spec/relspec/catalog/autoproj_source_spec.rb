@@ -59,14 +59,16 @@ RSpec.describe "Relspec::Catalog::AutoprojSource" do
     differing = catalog.packages.values.reject do |package|
       package.os_dependencies_for("bionic") == package.os_dependencies_for("buster")
     end
-    expect(differing.map(&:name)).to eq(%w[base/types drivers/iodrivers_base tools/orocos.rb])
+    expect(differing.map(&:name)).to eq(%w[base/types drivers/iodrivers_base tools/legacy tools/orocos.rb])
     types = catalog.package("base/types")
     expect(types.os_dependencies_for("bionic").to_h).to eq(
       "apt" => %w[build-essential cmake libboost-system-dev libboost-thread-dev libeigen3-dev]
     )
     expect(types.os_dependencies_for("buster").to_h).to eq(
-      "apt" => %w[build-essential cmake libboost1.67-all-dev], "nonexistent" => ["eigen"]
+      "apt" => %w[build-essential cmake libboost1.67-all-dev libeigen3-dev]
     )
+    expect(catalog.package("tools/legacy").os_dependencies_for("buster").to_h["nonexistent"]).to eq(["motif"])
+    expect(catalog.package("tools/legacy").os_dependencies_for("bionic").to_h["apt"]).to include("libmotif-dev")
     orocos = catalog.package("tools/orocos.rb")
     expect(orocos.os_dependencies_for("bionic").to_h).to eq("gems" => ["nokogiri"], "ignored" => %w[qt5-tools ruby])
     expect(orocos.os_dependencies_for("buster").to_h)

@@ -114,15 +114,41 @@ RSpec.describe "relspec plan" do
   end
 
   it "reports packages the release's own repository already holds as published" do
-    @fixture.repository("pub", [%w[bionic amd64]], { "tools/legacy" => {} })
+    @fixture.repository("pub", [%w[bionic amd64]], { "data/models" => {} })
     published = plan("pub", <<~YAML)
       parent: root
-      blacklist: [{ match: tools/legacy, reason: local patches }]
+      blacklist: [{ match: data/models, reason: local patches }]
       repository: { path: ../repos/pub, trusted: true }
     YAML
-    expect(decisions(published, "bionic/amd64")["tools/legacy"]).to eq('published: blacklisted by "tools/legacy" (local patches)')
-    expect(decisions(published, "buster/amd64")["tools/legacy"]).to eq('build: blacklisted by "tools/legacy" (local patches)')
-    expect(published.counts(Relspec::Plan::Target.parse("bionic/amd64"))).to eq(inherit: 6, build: 0, published: 1)
+    expect(decisions(published, "bionic/amd64")["data/models"]).to eq('published: blacklisted by "data/models" (local patches)')
+    expect(decisions(published, "buster/amd64")["data/models"]).to eq('build: blacklisted by "data/models" (local patches)')
+    expect(published.counts(Relspec::Plan::Target.parse("bionic/amd64"))).to eq(inherit: 6, build: 0, published: 1,
+                                                                                   unavailable: 0)
+  end
+
+  it "leaves out what a target cannot have, and says why in the lock, the reports and `why`" do
+    target = Relspec::Plan::Target.parse("buster/amd64")
+    expect(leaf.targets.fetch(target)).not_to have_key("tools/legacy")
+    expect(leaf.unavailable.fetch(target).transform_values(&:to_s))
+      .to eq("tools/legacy" => "osdep motif is nonexistent on buster")
+    expect(leaf.unavailable.fetch(Relspec::Plan::Target.parse("bionic/amd64"))).to eq({})
+    expect(leaf.counts(target)[:unavailable]).to eq(1)
+
+    lock = YAML.safe_load(Relspec::Plan::Lock.dump(leaf, "x"))
+    expect(lock.dig("targets", "buster/amd64", "tools/legacy"))
+      .to eq("decision" => "unavailable", "causes" => ["osdep motif is nonexistent on buster"])
+    expect(lock.dig("targets", "bionic/amd64", "tools/legacy", "decision")).to eq("build")
+
+    text = relspec("plan", "specs/leaf.yml", chdir: @dir)
+    expect(text.stdout).to include("not available on buster/amd64:\n  tools/legacy  osdep motif is nonexistent on buster")
+    expect(text.stdout).to match(%r{^buster/amd64\s+\d+\s+\d+\s+\d+\s+1$})
+    markdown = relspec("plan", "specs/leaf.yml", "--format", "markdown", chdir: @dir).stdout
+    expect(markdown).to include("| target | inherit | build | published | unavailable |",
+                                "- `tools/legacy`: osdep motif is nonexistent on buster")
+    why = relspec("why", "specs/leaf.yml", "tools/legacy", chdir: @dir)
+    expect(why.stdout).to include("buster/amd64: tools/legacy cannot be built there, because:\n  " \
+                                  "osdep motif is nonexistent on buster\n")
+    expect(why.stdout).to include("bionic/amd64: tools/legacy is built here")
   end
 
   it "refuses a blacklist entry that matches no package" do
