@@ -5,9 +5,11 @@ module Relspec
     # A target distribution as autoproj's osdeps name it: a type (ubuntu
     # inherits Debian's package names, so it is keyed "ubuntu,debian") and the
     # labels autoproj matches against the running system.
-    Distribution = Struct.new(:codename, :type, :labels, keyword_init: true) do
-      def self.define(codename, type, labels)
-        new(codename: codename, type: type, labels: labels.map(&:to_s).freeze).freeze
+    # +archive+: where the distribution's own packages can be read (a
+    # repository entry with components), or nil.
+    Distribution = Struct.new(:codename, :type, :labels, :archive, keyword_init: true) do
+      def self.define(codename, type, labels, archive: nil)
+        new(codename: codename, type: type, labels: labels.map(&:to_s).freeze, archive: archive&.freeze).freeze
       end
 
       def osdeps_type_key
@@ -41,10 +43,13 @@ module Relspec
         Distribution.define("bookworm", "debian", %w[12 bookworm default])
       ].to_h { |d| [d.codename, d] }.freeze
 
-      # Built-ins overlaid with a spec's own definitions ({codename => {"type", "labels"}}).
+      # Built-ins overlaid with a spec's own definitions ({codename =>
+      # {"type", "labels", "archive"}}); a built-in keeps what an override leaves out.
       def self.with_overrides(definitions)
         own = (definitions || {}).to_h do |codename, definition|
-          [codename, Distribution.define(codename, definition["type"], definition["labels"])]
+          known = BUILTIN[codename]
+          [codename, Distribution.define(codename, definition["type"] || known&.type,
+                                         definition["labels"] || known&.labels || [], archive: definition["archive"])]
         end
         BUILTIN.merge(own).freeze
       end

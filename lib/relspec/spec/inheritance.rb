@@ -15,12 +15,13 @@ module Relspec
     #   release's own pins over all.
     class Inheritance
       OWN = %w[release description parent workspace select blacklist repository external].freeze
-      INHERITED = %w[targets install_prefix separate_prefixes package_prefix maintainer distributions gems].freeze
+      INHERITED = %w[targets install_prefix separate_prefixes package_prefix maintainer distributions gems
+                   gem_source].freeze
       # Keys an external release may set for its descendants.
       EXTERNAL_KEYS = %w[targets install_prefix separate_prefixes package_prefix].freeze
       DEFAULTS = {
         "install_prefix" => "/opt/rock", "separate_prefixes" => true, "package_prefix" => "rock",
-        "gems" => {}, "distributions" => {}
+        "gems" => {}, "distributions" => {}, "gem_source" => "https://rubygems.org"
       }.freeze
 
       # The value was written but is broken: checks that depend on it stay quiet.

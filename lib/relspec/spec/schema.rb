@@ -21,6 +21,7 @@ module Relspec
         optional(:blacklist).array { str? | hash? }
         optional(:pins).value(:hash)
         optional(:gems).value(:hash)
+        optional(:gem_source).filled(:string)
         optional(:targets).value(:hash)
         optional(:repository).value(:hash)
         optional(:install_prefix).filled(:string)
@@ -64,10 +65,20 @@ module Relspec
         optional(:targets).value(:hash)
       end
 
+      # type and labels are required for codenames relspec does not know
+      # (Rules::Settings); archive is the distribution's own apt archive.
       DISTRIBUTION = Dry::Schema.JSON do
         config.validate_keys = true
-        required(:type).filled(:string, included_in?: %w[ubuntu debian])
-        required(:labels).filled(:array).each(:str?)
+        optional(:type).filled(:string, included_in?: %w[ubuntu debian])
+        optional(:labels).filled(:array).each(:str?)
+        optional(:archive).value(:hash)
+      end
+
+      # Where the distribution's packages can be read (to prefer its ruby-*
+      # packages over packaging gems): a repository plus its components.
+      ARCHIVE = Dry::Schema.JSON(parent: REPOSITORY) do
+        config.validate_keys = true
+        optional(:components).filled(:array).each(:str?)
       end
 
       def self.keys(schema)

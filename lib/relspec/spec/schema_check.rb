@@ -80,6 +80,10 @@ module Relspec
             apply(schema, value, [key, name])
           end
         end
+        (data["distributions"].is_a?(Hash) ? data["distributions"] : {}).each do |codename, definition|
+          archive = definition.is_a?(Hash) && definition["archive"]
+          apply(Schema::ARCHIVE, archive, ["distributions", codename, "archive"]) if archive.is_a?(Hash)
+        end
         check_text_values("gems", data["gems"])
       end
 

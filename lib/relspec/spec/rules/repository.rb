@@ -32,12 +32,12 @@ module Relspec
           problems.compact
         end
 
-        def self.bad_url(file, path, url)
+        def self.bad_url(file, path, url, example: "https://example.org/rock-releases/master-20.06")
           scheme = URI.parse(url).scheme
           return nil if SCHEMES.include?(scheme)
 
           Diagnostic.error("repository-url", "url #{url.inspect} is not an http(s) or file URL",
-                           location: file.location(path), hint: "write e.g. https://example.org/rock-releases/master-20.06")
+                           location: file.location(path), hint: "write e.g. #{example}")
         rescue URI::InvalidURIError
           Diagnostic.error("repository-url", "url #{url.inspect} is not a valid URL", location: file.location(path))
         end

@@ -2,6 +2,7 @@
 
 require_relative "../names"
 require_relative "../distribution"
+require_relative "repository"
 require_relative "../../diagnostic"
 
 module Relspec
@@ -13,7 +14,7 @@ module Relspec
         def self.call(file)
           [
             install_prefix(file), package_prefix(file), maintainer(file),
-            *gems(file), *selection(file), *distributions(file)
+            *gems(file), gem_source(file), *selection(file), *distributions(file)
           ].compact
         end
 
@@ -82,12 +83,41 @@ module Relspec
           definitions = file.usable("distributions")
           return [] unless definitions.is_a?(Hash)
 
-          definitions.filter_map do |codename, _definition|
-            next if Names::CODENAME.match?(codename)
+          definitions.flat_map do |codename, definition|
+            unless Names::CODENAME.match?(codename)
+              next [Diagnostic.error("unknown-distribution", "invalid distribution codename #{codename.inspect}",
+                                     location: file.key_location(["distributions", codename]),
+                                     hint: "codenames are lowercase, e.g. trixie")]
+            end
+            next [] unless definition.is_a?(Hash)
 
-            Diagnostic.error("unknown-distribution", "invalid distribution codename #{codename.inspect}",
-                             location: file.key_location(["distributions", codename]), hint: "codenames are lowercase, e.g. trixie")
+            [*new_distribution(file, codename, definition), *archive(file, codename, definition["archive"])]
           end
+        end
+
+        # A codename relspec does not know needs what autoproj keys it by.
+        def self.new_distribution(file, codename, definition)
+          return [] if Distributions::BUILTIN.key?(codename)
+
+          %w[type labels].reject { |key| definition.key?(key) }.map do |key|
+            Diagnostic.error("missing-key", "missing required key \"#{key}\" (#{codename} is not a built-in distribution)",
+                             location: file.location(["distributions", codename]),
+                             hint: key == "type" ? "type is ubuntu or debian" : "labels are the names autoproj knows it by, e.g. [13, trixie, default]")
+          end
+        end
+
+        def self.archive(file, codename, archive)
+          return [] unless archive.is_a?(Hash)
+
+          Repository.check(file, ["distributions", codename, "archive"], archive, "the archive of #{codename}")
+        end
+
+        # A URL (http, https, file) or a folder of .gem files, relative to the spec.
+        def self.gem_source(file)
+          source = file.usable("gem_source")
+          return nil unless source.is_a?(String) && source.include?("://")
+
+          Repository.bad_url(file, ["gem_source"], source, example: "https://rubygems.org, or a folder of .gem files")
         end
       end
     end
