@@ -10,6 +10,7 @@ require_relative "support/apt_repository_builder"
 require_relative "support/http_server"
 require_relative "support/release_file_editor"
 require_relative "support/release_fixture"
+require_relative "support/gem_builder"
 
 # In-process runs cache like CLI runs do: in a folder of the test run.
 ENV["XDG_CACHE_HOME"] = CliRunner::CACHE

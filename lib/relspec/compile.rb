@@ -76,7 +76,7 @@ module Relspec
         final = by_package.dup
         order(by_package).each do |name|
           decision = by_package[name]
-          next if decision.inherit?
+          next if decision.inherit? || decision.system?
 
           final[name], job = finalize(target, decision, final)
           if final[name].published?
@@ -137,7 +137,8 @@ module Relspec
         package: package, deb_name: decision.deb_name, upstream: upstream, codename: target.codename,
         release: @effective.release, maintainer: @effective["maintainer"], install_dir: install_dir_of(decision),
         dependencies: dependencies_of(package, decisions), apt: os.apt,
-        gems: os.gems.map { |gem| "ruby-#{Debian::Naming.canonical(gem)}" }
+        gems: (os.gems - @planned.release_catalog.gems.keys).map { |gem| "ruby-#{Debian::Naming.canonical(gem)}" },
+        gem: @planned.release_catalog.gems[package.name]
       }
     end
 
@@ -148,7 +149,10 @@ module Relspec
       end
     end
 
+    # The distribution's own packages install into the system: nil.
     def install_dir_of(decision)
+      return nil if decision.system?
+
       if decision.inherit?
         ancestor = @planned.ancestors.find { |candidate| candidate.name == decision.ancestor }
         prefix_dir(ancestor.install_prefix, ancestor.name, ancestor.separate_prefixes, decision.deb_name)

@@ -29,7 +29,8 @@ module Relspec
     def self.compute(path, timeout: 10, cache_dir: Apt::Cache.default_dir, catalog_cache: Catalog::Cache.new)
       resolution = Spec.resolve(path)
       effective = resolution.effective
-      release_catalog = Catalog::ReleaseCatalog.load(resolution, cache: catalog_cache)
+      gem_fetch = Catalog::ReleaseGems.fetcher(effective, File.dirname(resolution.spec_file.path), timeout: timeout)
+      release_catalog = Catalog::ReleaseCatalog.load(resolution, cache: catalog_cache, gem_fetch: gem_fetch)
       cache = Apt::Cache.new(cache_dir)
       fetcher_options = { timeout: timeout }
       ancestors = Ancestors.of(resolution, fetcher_options: fetcher_options, cache: cache)
@@ -38,8 +39,10 @@ module Relspec
       own = read_own(resolution, targets, fetcher_options, cache)
       lock_path = Lock.path(project_root(path), effective.release)
       recorded = Lock.builds(lock_path)
+      distribution = read_distribution(resolution, release_catalog, targets, fetcher_options, cache)
       planner = Planner.new(release_catalog: release_catalog, effective: effective, spec_file: resolution.spec_file,
-                            ancestors: ancestors, inventory: inventory, own: own, revisions: Lock.revisions(recorded))
+                            ancestors: ancestors, inventory: inventory, own: own, revisions: Lock.revisions(recorded),
+                            distribution: distribution)
       Result.new(resolution: resolution, plan: with_recorded_digests(planner.plan, recorded), lock_path: lock_path,
                  recorded: recorded,
                  spec_digest: Lock.spec_digest(effective), own: own, release_catalog: release_catalog,
@@ -69,6 +72,16 @@ module Relspec
       plan.with_targets(targets)
     end
 
+    # The targets' own ruby-* packages for the gems of the release.
+    def self.read_distribution(resolution, release_catalog, targets, fetcher_options, cache)
+      wanted = release_catalog.gems.keys.map { |name| "ruby-#{Debian::Naming.canonical(name)}" }
+      effective = resolution.effective
+      origin = effective.origin("distributions")
+      location = origin&.location || resolution.spec_file.location(["release"])
+      DistributionPackages.read(effective.distributions, targets, wanted, spec_dir: File.dirname(resolution.spec_file.path),
+                                                                           location: location, fetcher_options: fetcher_options, cache: cache)
+    end
+
     def self.read_own(resolution, targets, fetcher_options, cache)
       entry = resolution.effective["repository"]
       return OwnRepository.read(nil, targets) unless entry
@@ -83,6 +96,6 @@ module Relspec
       raise InvalidInput, [Diagnostic.error("own-repository", "the repository of #{resolution.effective.release}: #{e.message}",
                                             location: spec_file.key_location(["repository"]))]
     end
-    private_class_method :read_own, :with_recorded_digests
+    private_class_method :read_own, :read_distribution, :with_recorded_digests
   end
 end

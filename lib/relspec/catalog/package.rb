@@ -11,7 +11,7 @@ module Relspec
     # "YYYY-MM-DDTHH:MM:SSZ" (the upstream version is derived from it);
     # +os_dependencies+ maps a distribution codename to OsDependencies.
     class Package
-      BUILD_TYPES = %w[cmake orogen autotools ruby python import archive meta].freeze
+      BUILD_TYPES = %w[cmake orogen autotools ruby python import archive meta gem].freeze
 
       FIELDS = %i[name package_set build_type vcs commit_time version summary description license maintainer
                   source_dir checked_out dependencies optional_dependencies os_dependencies].freeze

@@ -4,16 +4,18 @@ require_relative "source"
 require_relative "pinning"
 require_relative "selection"
 require_relative "metapackages"
+require_relative "release_gems"
 require_relative "../display_path"
 
 module Relspec
   class Catalog
     # The catalog of one release: its workspace read for the release's
     # target distributions, its pins applied, the metapackages it selects by
-    # name added as packages, and the names of the selected packages (with
-    # dependencies) for each target codename.
+    # name added as packages, the gems of `gems:` added as packages, and the
+    # names of the selected packages (with dependencies) for each target
+    # codename. +gems+: gem name => GemArchive.
     class ReleaseCatalog
-      attr_reader :catalog, :selections, :workspace
+      attr_reader :catalog, :selections, :workspace, :gems
 
       # The selected names on one codename, with their packages, and the
       # selected packages that cannot exist there (name => Selection::Unavailable).
@@ -24,8 +26,9 @@ module Relspec
       end
 
       # +resolution+: a valid Spec::Resolution; +cache+: a Catalog::Cache
-      # for catalogs read from workspaces, or nil. Raises InvalidInput.
-      def self.load(resolution, cache: nil)
+      # for catalogs read from workspaces, or nil; +gem_fetch+: (name,
+      # version) → GemArchive (default: from the spec's gem_source). Raises InvalidInput.
+      def self.load(resolution, cache: nil, gem_fetch: nil)
         spec_file = resolution.spec_file
         effective = resolution.effective
         workspace = workspace_path(spec_file, effective)
@@ -37,7 +40,8 @@ module Relspec
                                               locate: ->(name) { effective.pin_origin(name)&.location })
         selections = select_all(pinned, effective, spec_file, workspace)
         catalog, names = Metapackages.add(pinned, effective["select"], selections)
-        new(catalog, names, selections.transform_values(&:unavailable), workspace)
+        catalog, names, gems = add_gems(catalog, names, resolution, gem_fetch)
+        new(catalog, names, selections.transform_values(&:unavailable), workspace, gems)
       end
 
       def self.workspace_path(spec_file, effective)
@@ -68,10 +72,19 @@ module Relspec
         selections
       end
 
-      private_class_method :workspace_path, :select_all
+      def self.add_gems(catalog, names, resolution, fetch)
+        effective = resolution.effective
+        fetch ||= ReleaseGems.fetcher(effective, File.dirname(resolution.spec_file.path))
+        origin = effective.origin("gems")
+        locate = ->(name) { origin&.default? ? nil : origin&.file&.location(["gems", name]) }
+        ReleaseGems.add(catalog, effective["gems"] || {}, names, fetch: fetch, locate: locate)
+      end
 
-      def initialize(catalog, names, unavailable, workspace)
+      private_class_method :workspace_path, :select_all, :add_gems
+
+      def initialize(catalog, names, unavailable, workspace, gems)
         @catalog = catalog
+        @gems = gems.freeze
         @selections = names.to_h { |codename, list| [codename, Selected.new(list, catalog, unavailable.fetch(codename)).freeze] }.freeze
         @workspace = workspace
         freeze

@@ -48,6 +48,8 @@ module Relspec
         case decision.kind
         when :inherit
           "#{target}: #{@package} is inherited from #{decision.ancestor} as #{decision.deb_name} #{decision.version}\n"
+        when :system
+          "#{target}: #{@package} is taken from the distribution as #{decision.deb_name} #{decision.version}\n"
         else
           verb = decision.published? ? "was built here and is published" : "is built here"
           "#{target}: #{@package} #{verb} as #{decision.deb_name} #{decision.version}, because:\n#{steps(decision.cause)}\n"

@@ -16,12 +16,13 @@ module Relspec
     # OS dependencies resolved for the codename.
     class DebianDir
       TEMPLATES = File.join(__dir__, "templates")
-      SECTIONS = { "ruby" => "ruby", "import" => "misc", "archive" => "misc", "meta" => "metapackages" }.freeze
+      SECTIONS = { "ruby" => "ruby", "gem" => "ruby", "import" => "misc", "archive" => "misc",
+                   "meta" => "metapackages" }.freeze
       ARCH_INDEPENDENT = %w[ruby import archive meta].freeze
       DH_OPTIONS = { "cmake" => " --buildsystem=cmake", "orogen" => " --buildsystem=cmake",
                      "autotools" => " --buildsystem=autoconf" }.freeze
       BUILD_TOOLS = { "cmake" => ["cmake"], "orogen" => ["cmake"], "autotools" => %w[autoconf automake libtool],
-                      "ruby" => ["ruby"], "import" => [], "archive" => [], "meta" => [] }.freeze
+                      "ruby" => ["ruby"], "gem" => ["ruby"], "import" => [], "archive" => [], "meta" => [] }.freeze
 
       # +revision+ stays a placeholder when computing the digest of debian/,
       # which must not depend on the revision it decides.
@@ -76,12 +77,23 @@ module Relspec
           vcs_ref: vcs_ref(package.vcs), commit: package.vcs.commit.to_s, date: changelog_date,
           copyright_holder: package.maintainer || @in.fetch(:maintainer), license: package.license || "unknown",
           build_type: package.build_type, install_dir: install_dir, dh_options: DH_OPTIONS.fetch(package.build_type, ""),
-          canonical: Naming.canonical(package.name), dependency_dirs: @in.fetch(:dependencies).map { |dep| dep[:install_dir] }
+          canonical: Naming.canonical(package.name), dependency_dirs: dependency_dirs, gem_file: gem_file
         }
       end
 
       def source
         @in.fetch(:deb_name)
+      end
+
+      # Prefixes of the dependencies built by Rock releases (the
+      # distribution's own packages live in the system).
+      def dependency_dirs
+        @in.fetch(:dependencies).filter_map { |dep| dep[:install_dir] }
+      end
+
+      def gem_file
+        gem = @in[:gem]
+        gem && "#{gem.name}-#{gem.version}.gem"
       end
 
       def install_dir
@@ -97,7 +109,10 @@ module Relspec
         "#{@in.fetch(:upstream)}-#{revision}~#{@in.fetch(:codename)}"
       end
 
+      # A gem is architecture-dependent only when it compiles an extension.
       def architecture
+        return @in.fetch(:gem).native? ? "any" : "all" if @in.fetch(:package).build_type == "gem"
+
         ARCH_INDEPENDENT.include?(@in.fetch(:package).build_type) ? "all" : "any"
       end
 
@@ -122,16 +137,16 @@ module Relspec
 
       # Build tools autoproj adds as OS dependencies of every cmake or
       # autotools package; a built package does not need them to run.
-      BUILD_ONLY = %w[cmake autoconf automake libtool pkg-config].freeze
+      BUILD_ONLY = %w[cmake autoconf automake libtool pkg-config ruby-dev].freeze
 
       def depends
         base = architecture == "any" ? ["${shlibs:Depends}", "${misc:Depends}"] : ["${misc:Depends}"]
-        base += ["ruby"] if @in.fetch(:package).build_type == "ruby"
+        base += ["ruby"] if %w[ruby gem].include?(@in.fetch(:package).build_type)
         (base + (relations - BUILD_ONLY)).uniq
       end
 
       def homepage
-        url = @in.fetch(:package).vcs.url.to_s
+        url = @in[:gem] ? @in[:gem].spec.homepage.to_s : @in.fetch(:package).vcs.url.to_s
         return nil if meta?
 
         url.match?(%r{\Ahttps?://}) ? url.delete_suffix(".git") : nil
@@ -171,7 +186,7 @@ module Relspec
         dir = install_dir
         {
           "package" => @in.fetch(:package).name, "release" => @in.fetch(:release), "prefix" => dir,
-          "dependencies" => @in.fetch(:dependencies).map { |dep| dep[:install_dir] },
+          "dependencies" => dependency_dirs,
           "prepend" => {
             "PATH" => ["#{dir}/bin"], "LD_LIBRARY_PATH" => ["#{dir}/lib"],
             "PKG_CONFIG_PATH" => ["#{dir}/lib/pkgconfig", "#{dir}/share/pkgconfig"], "CMAKE_PREFIX_PATH" => [dir],

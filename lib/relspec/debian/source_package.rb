@@ -101,7 +101,7 @@ module Relspec
         package = @input.fetch(:package)
         if package.build_type == "meta"
           with_meta_tree { |tree| OrigTarball.write(temporary, checkout: tree, commit: nil, prefix: "#{source}-#{upstream}", mtime: commit_time) }
-        elsif overlay_files.empty?
+        elsif overlay_files.empty? && package.build_type != "gem"
           OrigTarball.write(temporary, checkout: @checkout, commit: package.vcs.commit, prefix: "#{source}-#{upstream}",
                                        mtime: commit_time)
         else
@@ -124,14 +124,13 @@ module Relspec
         end
       end
 
+      # The upstream tree (the commit's files, or the unpacked gem) with the
+      # overlay's files over it.
       def with_overlaid_tree(overlay_files)
         Dir.mktmpdir("relspec-overlay") do |dir|
-          package = @input.fetch(:package)
-          archive = File.join(dir, "source.tar")
-          OrigTarball.pipe(["git", "-C", @checkout, "archive", "--format=tar", package.vcs.commit], "#{archive}.gz")
           tree = File.join(dir, "tree")
           FileUtils.mkdir_p(tree)
-          run(%W[tar -xzf #{archive}.gz -C #{tree}], dir)
+          unpack_upstream(dir, tree)
           overlay_files.each do |path, content|
             target = File.join(tree, path)
             FileUtils.mkdir_p(File.dirname(target))
@@ -139,6 +138,15 @@ module Relspec
           end
           yield tree
         end
+      end
+
+      def unpack_upstream(dir, tree)
+        gem = @input[:gem]
+        return gem.unpack(tree) if gem
+
+        archive = File.join(dir, "source.tar.gz")
+        OrigTarball.pipe(["git", "-C", @checkout, "archive", "--format=tar", @input.fetch(:package).vcs.commit], archive)
+        run(%W[tar -xzf #{archive} -C #{tree}], dir)
       end
 
       def commit_time

@@ -26,6 +26,10 @@ module Relspec
         new(:pinned, ref ? "#{commit} (#{ref})" : commit.to_s, nil)
       end
 
+      def self.gem_version(version, ancestor, theirs)
+        new(:gem_version, "#{version} (#{ancestor} has #{theirs})", nil)
+      end
+
       def self.depends_on(package, cause)
         new(:depends_on, package, cause)
       end
@@ -63,6 +67,7 @@ module Relspec
         when :no_ancestor_target then "no ancestor has target #{detail}"
         when :blacklisted then "blacklisted by #{detail}"
         when :pinned then "pinned to #{detail}"
+        when :gem_version then "gem version #{detail}"
         when :depends_on then "depends on #{detail}, which is rebuilt because #{because}"
         when :nonexistent_osdeps then detail
         when :unavailable_dependency then "depends on #{detail}, which is unavailable because #{because}"

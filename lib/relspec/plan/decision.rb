@@ -5,7 +5,8 @@ module Relspec
     # What happens to one package on one target:
     # - inherit: an ancestor's repository has it (+ancestor+, its +deb_name+ and +version+);
     # - build: it is built here (+deb_name+, +version+, +cause+);
-    # - published: it was built here already and the release's repository holds it.
+    # - published: it was built here already and the release's repository holds it;
+    # - system: a gem the target distribution itself provides (+deb_name+ ruby-…, +version+).
     # +debian_digest+ (builds, once compiled): the digest of the generated debian/.
     Decision = Struct.new(:package, :kind, :deb_name, :version, :ancestor, :cause, :debian_digest, keyword_init: true) do
       def inherit?
@@ -18,6 +19,10 @@ module Relspec
 
       def published?
         kind == :published
+      end
+
+      def system?
+        kind == :system
       end
 
       def to_h

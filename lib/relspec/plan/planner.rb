@@ -3,6 +3,7 @@
 require_relative "cause"
 require_relative "decision"
 require_relative "release_plan"
+require_relative "distribution_packages"
 require_relative "../apt/version"
 require_relative "../debian/naming"
 require_relative "../debian/package_version"
@@ -29,8 +30,10 @@ module Relspec
       # release's EffectiveSpec; +spec_file+: its SpecFile (for locations);
       # +ancestors+: Plan::Ancestor in search order; +inventory+: Inventory;
       # +own+: OwnRepository; +revisions+: "codename/arch" => package =>
-      # {upstream => revision} remembered by the previous lock.
-      def initialize(release_catalog:, effective:, spec_file:, ancestors:, inventory:, own:, revisions: {})
+      # {upstream => revision} remembered by the previous lock;
+      # +distribution+: DistributionPackages (the targets' own ruby-* packages).
+      def initialize(release_catalog:, effective:, spec_file:, ancestors:, inventory:, own:, revisions: {},
+                     distribution: DistributionPackages.new({}, []))
         @catalog = release_catalog.catalog
         @selections = release_catalog.selections
         @effective = effective
@@ -39,6 +42,7 @@ module Relspec
         @inventory = inventory
         @own = own
         @revisions = revisions
+        @distribution = distribution
         @warnings = []
         @notes = []
       end
@@ -48,6 +52,7 @@ module Relspec
         targets = Target.all(@effective)
         decisions = targets.to_h { |target| [target, plan_target(target, blacklist)] }
         unavailable = targets.to_h { |target| [target, unavailable_on(target)] }
+        note_gems_without_archive
         ReleasePlan.new(release: @effective.release, targets: decisions, packages: package_records(decisions, unavailable),
                         release_digests: @inventory.release_digests, warnings: merged_warnings, notes: @notes.uniq.sort,
                         unavailable: unavailable)
@@ -60,8 +65,27 @@ module Relspec
         names = selection.names
         providers = names.to_h { |name| [name, providers_of(@catalog.package(name), target)] }
         causes = names.to_h { |name| [name, direct_cause(@catalog.package(name), target, providers[name], blacklist)] }.compact
-        rebuild_dependents(names, causes)
-        names.to_h { |name| [name, decide(@catalog.package(name), target, providers[name], causes[name])] }
+        system = names.to_h { |name| [name, from_distribution(@catalog.package(name), target, causes[name])] }.compact
+        causes.reject! { |name, _| system.key?(name) }
+        rebuild_dependents(names - system.keys, causes)
+        names.to_h { |name| [name, system[name] || decide(@catalog.package(name), target, providers[name], causes[name])] }
+      end
+
+      # A gem of the release that the target distribution has at the same
+      # version is taken from it (unless the spec blacklists the gem).
+      def from_distribution(package, target, cause)
+        return nil unless package.build_type == "gem" && cause&.kind != :blacklisted
+
+        name = "ruby-#{Debian::Naming.canonical(package.name)}"
+        version = @distribution.version_of(name, target)
+        return nil unless version
+
+        if Apt::Version.parse(version).upstream.sub(/[+~](dfsg|ds|repack).*\z/, "") == upstream(package)
+          return Decision.new(package: package.name, kind: :system, deb_name: name, version: version).freeze
+        end
+
+        @notes << "#{target.codename} has #{name} #{version}, the release packages gem #{package.name} #{package.version}"
+        nil
       end
 
       # name => Cause for the selected packages the target cannot have.
@@ -96,6 +120,9 @@ module Relspec
 
         pinned = pin_cause(package, providers)
         return pinned if pinned
+
+        gem = gem_cause(package, providers)
+        return gem if gem
         return Cause.missing if @ancestors.empty?
         return Cause.no_ancestor_target(target) if @ancestors.none? { |a| @inventory.target?(a.name, target) }
         return Cause.missing if providers.empty?
@@ -114,6 +141,15 @@ module Relspec
         return nil if nearest && ours && Debian::PackageVersion.upstream_of(nearest[1].version) == ours
 
         Cause.pinned(package.vcs.commit || value, label)
+      end
+
+      # A gem's version is fixed by the spec: an ancestor with another
+      # version cannot provide it.
+      def gem_cause(package, providers)
+        return nil unless package.build_type == "gem" && (nearest = providers.first)
+
+        theirs = Debian::PackageVersion.upstream_of(nearest[1].version)
+        theirs == upstream(package) ? nil : Cause.gem_version(upstream(package), nearest[0].name, theirs || nearest[1].version)
       end
 
       # Breadth first from the rebuilt packages along reverse dependencies,
@@ -173,12 +209,20 @@ module Relspec
       end
 
       def upstream(package)
-        Debian::PackageVersion.upstream(package.version, package.commit_time)
+        Debian::PackageVersion.of_package(package)
       end
 
       def deb_name(package, prefix, release)
         Debian::Naming.deb_name(prefix: prefix, release: release, package_name: package.name,
                                 build_type: package.build_type)
+      end
+
+      def note_gems_without_archive
+        return if @distribution.unknown.empty? || @catalog.packages.values.none? { |package| package.build_type == "gem" }
+
+        codenames = @distribution.unknown.map(&:codename).uniq.sort
+        @notes << "gems are packaged here on #{codenames.join(', ')}: no distribution archive to take ruby-* packages " \
+                  "from (distributions.<codename>.archive)"
       end
 
       def note_shadowing(package, target, providers)

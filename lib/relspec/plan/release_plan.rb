@@ -29,7 +29,8 @@ module Relspec
       def counts(target)
         decisions = targets.fetch(target).values
         { inherit: decisions.count(&:inherit?), build: decisions.count(&:build?),
-          published: decisions.count(&:published?), unavailable: unavailable.fetch(target).size }
+          published: decisions.count(&:published?), system: decisions.count(&:system?),
+          unavailable: unavailable.fetch(target).size }
       end
 
       # Returns the same plan with other decisions (compile settles versions).

@@ -21,11 +21,11 @@ module Relspec
       end
 
       def text
-        lines = [headline, "", format("%-22s %8s %6s %10s%s", "target", "inherit", "build", "published", unavailable_column)]
+        columns = self.columns
+        lines = [headline, "", "#{'target'.ljust(22)}#{columns.map { |column| column.to_s.rjust(12) }.join}"]
         @targets.each do |target|
           counts = @plan.counts(target)
-          lines << format("%-22s %8d %6d %10d%s", target, counts[:inherit], counts[:build], counts[:published],
-                          unavailable_column(counts))
+          lines << "#{target.to_s.ljust(22)}#{columns.map { |column| counts[column].to_s.rjust(12) }.join}"
         end
         build_groups.each do |targets, builds|
           lines << "" << "builds on #{targets.join(', ')}:"
@@ -35,10 +35,12 @@ module Relspec
             lines << "    #{decision.cause}"
           end
         end
-        unavailable_groups.each do |targets, causes|
-          lines << "" << "not available on #{targets.join(', ')}:"
-          width = causes.keys.map(&:size).max
-          causes.each { |name, cause| lines << "  #{name.ljust(width)}  #{cause}" }
+        { "taken from the distribution on" => system_groups, "not available on" => unavailable_groups }.each do |title, groups|
+          groups.each do |targets, texts|
+            lines << "" << "#{title} #{targets.join(', ')}:"
+            width = texts.keys.map(&:size).max
+            texts.each { |name, text| lines << "  #{name.ljust(width)}  #{text}" }
+          end
         end
         lines.concat(section("warnings", @plan.warnings.map(&:message)))
         lines.concat(section("notes", @plan.notes))
@@ -46,21 +48,21 @@ module Relspec
       end
 
       def markdown
-        gaps = unavailable?
-        lines = ["### #{headline}", "", "| target | inherit | build | published |#{' unavailable |' if gaps}",
-                 "| --- | ---: | ---: | ---: |#{' ---: |' if gaps}"]
+        columns = self.columns
+        lines = ["### #{headline}", "", "| target | #{columns.join(' | ')} |", "| --- |#{' ---: |' * columns.size}"]
         @targets.each do |target|
           counts = @plan.counts(target)
-          lines << "| #{target} | #{counts[:inherit]} | #{counts[:build]} | #{counts[:published]} |" \
-                   "#{" #{counts[:unavailable]} |" if gaps}"
+          lines << "| #{target} | #{columns.map { |column| counts[column] }.join(' | ')} |"
         end
         build_groups.each do |targets, builds|
           lines << "" << "**Builds on #{targets.join(', ')}**" << ""
           builds.each { |decision| lines << "- `#{decision.package}` (`#{decision.deb_name}`): #{decision.cause}" }
         end
-        unavailable_groups.each do |targets, causes|
-          lines << "" << "**Not available on #{targets.join(', ')}**" << ""
-          causes.each { |name, cause| lines << "- `#{name}`: #{cause}" }
+        { "Taken from the distribution on" => system_groups, "Not available on" => unavailable_groups }.each do |title, groups|
+          groups.each do |targets, texts|
+            lines << "" << "**#{title} #{targets.join(', ')}**" << ""
+            texts.each { |name, text| lines << "- `#{name}`: #{text}" }
+          end
         end
         lines.concat(section("**Warnings**", @plan.warnings.map(&:message), bullet: "-"))
         lines.concat(section("**Notes**", @plan.notes, bullet: "-"))
@@ -76,26 +78,32 @@ module Relspec
           "ancestors: #{ancestors.empty? ? 'none' : ancestors.join(', ')}"
       end
 
-      # The column appears only for releases with packages some target
-      # cannot have, so plain releases read as before.
-      def unavailable_column(counts = nil)
-        return "" unless unavailable?
-
-        counts ? format(" %11d", counts[:unavailable]) : format(" %11s", "unavailable")
+      # system and unavailable appear only for releases that have such
+      # packages, so plain releases read as they always did.
+      def columns
+        optional = %i[system unavailable].select { |column| @targets.any? { |target| @plan.counts(target)[column].positive? } }
+        %i[inherit build published] + optional
       end
 
-      def unavailable?
-        @targets.any? { |target| !@plan.unavailable.fetch(target).empty? }
-      end
-
-      # Targets lacking the same packages for the same reasons are shown once.
       def unavailable_groups
+        grouped { |target| @plan.unavailable.fetch(target).transform_values(&:to_s) }
+      end
+
+      def system_groups
+        grouped do |target|
+          @plan.targets.fetch(target).values.select(&:system?).sort_by(&:package)
+               .to_h { |decision| [decision.package, "#{decision.deb_name} #{decision.version}"] }
+        end
+      end
+
+      # [[targets, {package => text}]]: targets with the same texts are shown once.
+      def grouped
         groups = Hash.new { |hash, key| hash[key] = [] }
         @targets.each do |target|
-          causes = @plan.unavailable.fetch(target).transform_values(&:to_s)
-          groups[causes] << target.to_s unless causes.empty?
+          texts = yield(target)
+          groups[texts] << target.to_s unless texts.empty?
         end
-        groups.map { |causes, targets| [targets, causes] }
+        groups.map { |texts, targets| [targets, texts] }
       end
 
       # Targets whose builds (packages and causes) are the same are shown once.

@@ -1,0 +1,111 @@
+# frozen_string_literal: true
+
+require "digest"
+require "fileutils"
+require "rubygems/package"
+require "zlib"
+require_relative "../apt/fetcher"
+require_relative "../atomic_file"
+require_relative "../error"
+
+module Relspec
+  class Catalog
+    # One gem of the spec's `gems:` as it is published: the .gem file (read
+    # from a folder, or downloaded once from a RubyGems-style server into the
+    # cache), its SHA256 and its gemspec. The .gem is the upstream source of
+    # the package relspec makes from it.
+    class GemArchive
+      # Raised when the gem cannot be had or is not the gem asked for.
+      class Problem < Relspec::Error; end
+
+      attr_reader :name, :version, :path, :sha256, :spec, :origin
+
+      # +source+: the spec's gem_source (an http(s)/file URL, or a folder
+      # relative to +base_dir+); +cache_dir+: where downloads are kept (nil:
+      # a temporary copy is not kept, the gem is downloaded on every run).
+      def self.fetch(name, version, source:, base_dir:, cache_dir:, timeout: 10)
+        file = "#{name}-#{version}.gem"
+        if source.include?("://") && !source.start_with?("file://")
+          origin = "#{source.chomp('/')}/gems/#{file}"
+          path = download(Apt::Fetcher.new(source, timeout: timeout), "gems/#{file}", origin, cache_dir, file)
+        else
+          origin = "#{source.chomp('/')}/#{file}"
+          path = File.join(File.expand_path(source.delete_prefix("file://"), base_dir), file)
+          raise Problem, "gem #{name} #{version} is not in #{source} (no #{file})" unless File.file?(path)
+        end
+        new(name, version, path, origin)
+      end
+
+      def self.download(fetcher, relative, origin, cache_dir, file)
+        cached = cache_dir && File.join(cache_dir, file)
+        return cached if cached && File.file?(cached)
+
+        bytes = fetcher.fetch(relative)
+        raise Problem, "#{origin} does not exist (HTTP 404)" unless bytes
+
+        target = cached || File.join(Dir.mktmpdir("relspec-gem"), file)
+        FileUtils.mkdir_p(File.dirname(target))
+        AtomicFile.write(target, bytes)
+        target
+      rescue Apt::Fetcher::Failure => e
+        raise Problem, "cannot download #{origin}: #{e.message}"
+      end
+      private_class_method :download
+
+      def initialize(name, version, path, origin)
+        @name = name
+        @version = version
+        @path = path
+        @origin = origin
+        @sha256 = Digest::SHA256.file(path).hexdigest
+        @spec = read_spec
+        freeze
+      end
+
+      # The gem's date as a catalog commit time (what dates the changelog and
+      # the files of the orig tarball).
+      def time
+        spec.date.utc.strftime("%Y-%m-%dT%H:%M:%SZ")
+      end
+
+      def native?
+        !spec.extensions.empty?
+      end
+
+      # Runtime dependencies: [[name, requirement]].
+      def runtime_dependencies
+        spec.runtime_dependencies.map { |dependency| [dependency.name, dependency.requirement] }.sort_by(&:first)
+      end
+
+      # Unpacks the gem into +dir+ as gem2tgz does: the files of the gem,
+      # and its metadata as metadata.yml (the bytes the gem holds, so the
+      # tree does not depend on the local RubyGems version).
+      def unpack(dir)
+        Gem::Package.new(path).extract_files(dir)
+        File.binwrite(File.join(dir, "metadata.yml"), metadata_bytes)
+      rescue Gem::Package::Error, Zlib::Error => e
+        raise Problem, "cannot unpack #{File.basename(path)}: #{e.message}"
+      end
+
+      private
+
+      def read_spec
+        spec = Gem::Package.new(path).spec
+        return spec if spec.name == name && spec.version.to_s == version
+
+        raise Problem, "#{origin} holds #{spec.name} #{spec.version}, not #{name} #{version}"
+      rescue Gem::Package::Error, Zlib::Error, Psych::Exception, ArgumentError => e
+        raise Problem, "#{origin} is not a readable gem (#{e.message})"
+      end
+
+      def metadata_bytes
+        File.open(path, "rb") do |io|
+          Gem::Package::TarReader.new(io).each do |entry|
+            return Zlib.gunzip(entry.read) if entry.full_name == "metadata.gz"
+          end
+        end
+        raise Problem, "#{File.basename(path)} has no metadata.gz"
+      end
+    end
+  end
+end

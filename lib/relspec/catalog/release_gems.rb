@@ -1,0 +1,98 @@
+# frozen_string_literal: true
+
+require_relative "package"
+require_relative "gem_archive"
+require_relative "../cache_dir"
+require_relative "../diagnostic"
+require_relative "../error"
+
+module Relspec
+  class Catalog
+    # The third-party gems of a spec's `gems:` become packages of the
+    # release (build type "gem", named by the gem as autoproj's osdeps name
+    # gems): made from the published .gem, depending on the other gems of
+    # the release they need, and needed by every workspace package whose
+    # OS dependencies name them. Their other runtime dependencies stay OS
+    # dependencies (the distribution's ruby-* packages).
+    module ReleaseGems
+      module_function
+
+      # +gems+: name => version; +fetch+: (name, version) → GemArchive;
+      # +locate+: name → Location of its `gems:` entry; +names+: codename =>
+      # selected names. Returns [catalog, names] with the gems added.
+      # Raises InvalidInput.
+      def add(catalog, gems, names, fetch:, locate:)
+        return [catalog, names, {}] if gems.empty?
+
+        archives = fetch_all(catalog, gems, fetch, locate)
+        check_requirements(archives, locate)
+        packages = archives.to_h { |name, archive| [name, package_of(archive, archives, catalog.codenames)] }
+        users = catalog.packages.transform_values { |package| with_gem_dependencies(package, archives.keys, catalog.codenames) }
+        extended = Catalog.new(packages: users.merge(packages), metapackages: catalog.metapackages, layout: catalog.layout,
+                               excluded: catalog.excluded, ignored: catalog.ignored, codenames: catalog.codenames)
+        [extended, names.transform_values { |list| (list + archives.keys).uniq.sort.freeze }, archives]
+      end
+
+      def fetch_all(catalog, gems, fetch, locate)
+        problems = []
+        archives = gems.sort.to_h do |name, version|
+          if catalog.package?(name)
+            problems << Diagnostic.error("gem-name", "gem #{name} has the name of a package of the workspace",
+                                         location: locate.call(name), hint: "package it from the workspace, or rename one")
+            next [name, nil]
+          end
+          [name, fetch.call(name, version)]
+        rescue GemArchive::Problem => e
+          problems << Diagnostic.error("gem-source", e.message, location: locate.call(name),
+                                                                hint: "check gem_source and the version")
+          [name, nil]
+        end
+        raise InvalidInput, problems unless problems.empty?
+
+        archives
+      end
+
+      # A gem of the release that another one needs must be at a version
+      # that one accepts: apt would refuse to install them together.
+      def check_requirements(archives, locate)
+        problems = archives.values.flat_map do |archive|
+          archive.runtime_dependencies.filter_map do |dependency, requirement|
+            other = archives[dependency]
+            next unless other && !requirement.satisfied_by?(Gem::Version.new(other.version))
+
+            Diagnostic.error("gem-requirement", "gem #{archive.name} #{archive.version} needs #{dependency} " \
+                                                "#{requirement}, the release packages #{dependency} #{other.version}",
+                             location: locate.call(dependency), hint: "pick versions that fit together")
+          end
+        end
+        raise InvalidInput, problems unless problems.empty?
+      end
+
+      def package_of(archive, archives, codenames)
+        spec = archive.spec
+        needed = archive.runtime_dependencies.map(&:first)
+        os = OsDependencies.build(apt: archive.native? ? %w[ruby-dev] : [], gems: needed - archives.keys)
+        Package.new(name: archive.name, package_set: nil, build_type: "gem",
+                    vcs: Vcs.new(type: "gem", url: archive.origin, commit: archive.sha256).freeze,
+                    commit_time: archive.time, source_dir: nil, version: archive.version,
+                    summary: spec.summary, description: spec.description, license: spec.licenses.join(" or ").then { |l| l.empty? ? nil : l },
+                    maintainer: spec.authors.empty? ? nil : spec.authors.join(", "),
+                    dependencies: needed & archives.keys, os_dependencies: codenames.to_h { |codename| [codename, os] })
+      end
+
+      def with_gem_dependencies(package, gem_names, codenames)
+        used = codenames.flat_map { |codename| package.os_dependencies_for(codename).gems } & gem_names
+        used.empty? ? package : package.with(dependencies: package.dependencies + used)
+      end
+
+      # Fetches from the effective spec's gem_source, downloads cached in
+      # the XDG cache.
+      def fetcher(effective, spec_dir, timeout: 10, cache_dir: CacheDir.for("gems"))
+        lambda do |name, version|
+          GemArchive.fetch(name, version, source: effective["gem_source"], base_dir: spec_dir, cache_dir: cache_dir,
+                                          timeout: timeout)
+        end
+      end
+    end
+  end
+end

@@ -1,0 +1,68 @@
+# frozen_string_literal: true
+
+require_relative "ancestor"
+require_relative "../apt/repository"
+require_relative "../apt/version"
+require_relative "../diagnostic"
+require_relative "../error"
+
+module Relspec
+  module Plan
+    # The packages a target distribution itself provides, read from its
+    # archive (`distributions.<codename>.archive`), limited to the names
+    # the plan asks about: a gem of the release is taken from the
+    # distribution when it has the gem as ruby-<name> at the same version.
+    class DistributionPackages
+      # +wanted+: Debian names to look up; +spec_dir+: the folder relative
+      # archive paths start from; +location+: where the archives are declared.
+      # Targets without an archive get no entries. Raises InvalidInput when
+      # an archive cannot be read.
+      def self.read(distributions, targets, wanted, spec_dir:, location:, fetcher_options: {}, cache: Apt::Cache.new(nil))
+        return new({}, []) if wanted.empty?
+
+        found = {}
+        problems = []
+        targets.each do |target|
+          archive = distributions.fetch(target.codename).archive
+          next unless archive
+
+          repository = Ancestors.reader(archive, spec_dir, fetcher_options, cache)
+          found[target] = versions(repository, archive, target, wanted)
+        rescue Apt::Repository::Error => e
+          problems << Diagnostic.error("distribution-archive", "the archive of #{target.codename}: #{e.message}",
+                                       location: location, hint: "check distributions.#{target.codename}.archive, or the network")
+        end
+        raise InvalidInput, problems.uniq(&:message) unless problems.empty?
+
+        new(found, targets.reject { |target| found.key?(target) })
+      end
+
+      # Newest version of each wanted name over the archive's components.
+      def self.versions(repository, archive, target, wanted)
+        (archive["components"] || ["main"]).each_with_object({}) do |component, out|
+          index = repository.packages(target.codename, target.arch, component: component)
+          wanted.each do |name|
+            entry = index[name]
+            next unless entry && (out[name].nil? || Apt::Version.parse(entry.version) > Apt::Version.parse(out[name]))
+
+            out[name] = entry.version
+          end
+        end
+      end
+      private_class_method :versions
+
+      attr_reader :unknown
+
+      # +found+: Target => {name => version}; +unknown+: targets without an archive.
+      def initialize(found, unknown)
+        @found = found.freeze
+        @unknown = unknown.freeze
+        freeze
+      end
+
+      def version_of(name, target)
+        @found.dig(target, name)
+      end
+    end
+  end
+end
