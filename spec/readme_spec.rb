@@ -33,7 +33,9 @@ RSpec.describe "the README's example command" do
     output, status = Open3.capture2e(File.join(CliRunner::ROOT, "bin", "demo"))
     expect(status).to be_success, output
     expect(output).to include("2 specs valid: specs/demo-base.yml specs/demo-child.yml")
-    expect(output).to match(%r{^bionic/amd64\s+4\s+3\s+0$})
+    expect(output).to match(%r{^bionic/amd64\s+4\s+3\s+0\s+0$})
+    expect(output).to match(%r{^buster/amd64\s+3\s+3\s+0\s+1$})
+    expect(output).to include("not available on buster/amd64:\n  tools/legacy  osdep motif is nonexistent on buster")
     expect(output).to include('blacklisted by "base/types" (the project needs the 2020 types API)')
     expect(output).to include("depends on base/types, which is rebuilt because blacklisted by")
   end

@@ -122,7 +122,7 @@ RSpec.describe "relspec plan" do
     YAML
     expect(decisions(published, "bionic/amd64")["data/models"]).to eq('published: blacklisted by "data/models" (local patches)')
     expect(decisions(published, "buster/amd64")["data/models"]).to eq('build: blacklisted by "data/models" (local patches)')
-    expect(published.counts(Relspec::Plan::Target.parse("bionic/amd64"))).to eq(inherit: 6, build: 0, published: 1,
+    expect(published.counts(Relspec::Plan::Target.parse("bionic/amd64"))).to eq(inherit: 6, build: 0, published: 1, system: 0,
                                                                                    unavailable: 0)
   end
 
