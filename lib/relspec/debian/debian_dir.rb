@@ -22,7 +22,7 @@ module Relspec
       DH_OPTIONS = { "cmake" => " --buildsystem=cmake", "orogen" => " --buildsystem=cmake",
                      "autotools" => " --buildsystem=autoconf" }.freeze
       BUILD_TOOLS = { "cmake" => ["cmake"], "orogen" => ["cmake"], "autotools" => %w[autoconf automake libtool],
-                      "ruby" => ["ruby"], "gem" => ["ruby"], "import" => [], "archive" => [], "meta" => [] }.freeze
+                      "ruby" => %w[ruby git], "gem" => ["ruby"], "import" => [], "archive" => [], "meta" => [] }.freeze
 
       # +revision+ stays a placeholder when computing the digest of debian/,
       # which must not depend on the revision it decides.

@@ -1,0 +1,102 @@
+# frozen_string_literal: true
+
+require "spec_helper"
+
+# The build types the demo workspace does not cover end to end: a Ruby
+# package whose gemspec lists its files with `git ls-files` (as most Rock
+# gemspecs do), and an oroGen component. Both are compiled from a real
+# autoproj workspace and built with dpkg-buildpackage.
+RSpec.describe "compiling Ruby gemspec and oroGen packages" do
+  GEMSPEC = <<~RUBY
+    Gem::Specification.new do |s|
+      s.name = "rubylib"
+      s.version = "0.4.0"
+      s.summary = "A Ruby package of the test workspace"
+      s.authors = ["Rock Packaging"]
+      s.files = `git ls-files -z`.split("\\x0")
+      s.bindir = "bin"
+      s.executables = ["rubylib"]
+    end
+  RUBY
+
+  # A stand-in for oroGen's generator: oroGen itself (and the Orocos
+  # toolchain it needs) cannot be installed on this machine, so this script
+  # does what debian/rules relies on: it generates a CMake project in the
+  # package root from the .orogen file, and records its arguments.
+  STAND_IN_OROGEN = <<~SH
+    #!/bin/sh
+    echo "$@" > orogen-arguments
+    cat > CMakeLists.txt <<'EOF'
+    cmake_minimum_required(VERSION 3.10)
+    project(camera NONE)
+    install(FILES camera.orogen orogen-arguments DESTINATION share/orogen)
+    EOF
+  SH
+
+  before(:all) do
+    @dir = Dir.mktmpdir("relspec-build-types")
+    builder = WorkspaceBuilder.new(File.join(@dir, "ws"))
+    builder.package("tools/rubylib", type: :ruby, date: "2020-03-01T00:00:00Z", version: "0.4",
+                                     files: { "rubylib.gemspec" => GEMSPEC, "lib/rubylib.rb" => "module Rubylib\nend\n",
+                                              "bin/rubylib" => "#!/usr/bin/env ruby\nputs 'rubylib'\n" })
+    builder.package("drivers/orogen/camera", type: :orogen, date: "2020-03-02T00:00:00Z",
+                                             files: { "camera.orogen" => "name \"camera\"\n" })
+    builder.layout("tools/rubylib", "drivers/orogen/camera")
+    builder.create
+    FileUtils.mkdir_p(File.join(@dir, "specs"))
+    File.write(File.join(@dir, "specs", "types.yml"), "release: types\nworkspace: ../ws/workspace\n" \
+                                                       "targets: { bookworm: [amd64] }\nmaintainer: Demo <demo@example.org>\n")
+    @run = relspec("compile", "specs/types.yml", "--out", "out", chdir: @dir)
+    @tools = File.join(@dir, "tools")
+    FileUtils.mkdir_p(@tools)
+    File.write(File.join(@tools, "orogen"), STAND_IN_OROGEN)
+    File.chmod(0o755, File.join(@tools, "orogen"))
+  end
+
+  after(:all) { FileUtils.rm_rf(@dir) }
+
+  def build(deb, work)
+    dsc = Dir.glob(File.join(@dir, "out", "types", "bookworm-amd64", deb, "*.dsc")).first
+    output, status = Open3.capture2e("dpkg-source", "-x", dsc, deb, chdir: work)
+    raise output unless status.success?
+
+    env = { "PATH" => "#{@tools}:#{ENV.fetch('PATH')}" }
+    output, status = Open3.capture2e(env, "dpkg-buildpackage", "-us", "-uc", "-b", "-d", chdir: File.join(work, deb))
+    expect(status).to be_success, output.lines.last(20).join
+    Dir.glob(File.join(work, "#{deb}_*.deb")).first
+  end
+
+  def contents(deb)
+    Open3.capture2("dpkg-deb", "-c", deb).first
+  end
+
+  it "builds a gem from a gemspec that asks git for its files" do
+    expect(@run.exit_code).to eq(0), @run.stderr
+    Dir.mktmpdir("relspec-ruby") do |work|
+      deb = build("rock-types-ruby-tools-rubylib", work)
+      prefix = "./opt/rock/types/rock-types-ruby-tools-rubylib"
+      expect(contents(deb)).to include("#{prefix}/lib/ruby/gems/gems/rubylib-0.4.0/lib/rubylib.rb",
+                                       "#{prefix}/lib/ruby/gems/specifications/rubylib-0.4.0.gemspec",
+                                       "#{prefix}/bin/rubylib")
+      expect(contents(deb)).not_to include("rubylib-0.4.0/debian/")
+      # the throwaway repository and the built gem go away with `clean`
+      tree = File.join(work, "rock-types-ruby-tools-rubylib")
+      expect(File).to exist(File.join(tree, ".git", "relspec-throwaway"))
+      output, status = Open3.capture2e("debian/rules", "clean", chdir: tree)
+      expect(status).to be_success, output
+      expect(Dir.children(tree).sort - [".pc"]).to eq(%w[bin debian lib manifest.xml rubylib.gemspec]) # .pc: dpkg-source's
+    end
+  end
+
+  it "runs the oroGen generator before configuring with CMake" do
+    Dir.mktmpdir("relspec-orogen") do |work|
+      deb = build("rock-types-drivers-orogen-camera", work)
+      share = "./opt/rock/types/rock-types-drivers-orogen-camera/share/orogen"
+      expect(contents(deb)).to include("#{share}/camera.orogen", "#{share}/orogen-arguments")
+      root = File.join(work, "root")
+      system("dpkg-deb", "-x", deb, root, exception: true)
+      arguments = File.read(File.join(root, share, "orogen-arguments"))
+      expect(arguments).to eq("--corba --transports=corba,typelib,mqueue camera.orogen\n")
+    end
+  end
+end
