@@ -58,13 +58,25 @@ module Relspec
 
       private
 
-      # Compiled once: compiling ERB costs more than rendering it.
-      COMPILED = Dir.glob("*.erb", base: TEMPLATES).to_h do |name|
-        [name, ERB.new(File.read(File.join(TEMPLATES, name)), trim_mode: "-").tap { |erb| erb.filename = name }]
+      # What the templates see: the variables below, plus +version+
+      # (changelog) and +body+ (rules).
+      Context = Struct.new(:source, :section, :maintainer, :build_depends, :depends, :homepage, :architecture,
+                           :synopsis, :long_description, :codename, :release, :package_name, :vcs_url, :vcs_ref,
+                           :commit, :date, :copyright_holder, :license, :build_type, :install_dir, :dh_options,
+                           :canonical, :dependency_dirs, :gem_file, :version, :body, keyword_init: true)
+
+      # Each template becomes a method of Context, compiled once: evaluating
+      # ERB source on every render (result_with_hash) cost a no-op compile of
+      # 400 packages 0.4 s.
+      METHODS = Dir.glob("*.erb", base: TEMPLATES).sort.to_h do |name|
+        method = "render_#{name.delete_suffix('.erb').tr('.', '_')}"
+        ERB.new(File.read(File.join(TEMPLATES, name)), trim_mode: "-").def_method(Context, "#{method}()", name)
+        [name, method.to_sym]
       end.freeze
 
       def template(name, **locals)
-        COMPILED.fetch(name).result_with_hash((@variables ||= variables).merge(locals))
+        context = Context.new(**(@variables ||= variables), **locals)
+        context.public_send(METHODS.fetch(name))
       end
 
       def variables
