@@ -9,6 +9,7 @@ require_relative "plan/ancestor"
 require_relative "plan/inventory"
 require_relative "plan/planner"
 require_relative "plan/lock"
+require_relative "plan/gem_check"
 
 module Relspec
   # The release plan (DESIGN §3, §4): for every target and package, inherit,
@@ -38,7 +39,9 @@ module Relspec
       inventory = Inventory.read(ancestors, targets)
       own = read_own(resolution, targets, fetcher_options, cache)
       lock_path = Lock.path(project_root(path), effective.release)
-      recorded = Lock.builds(lock_path)
+      locked = Lock.read(lock_path)
+      recorded = Lock.builds(locked)
+      GemCheck.call(locked, release_catalog, resolution)
       distribution = read_distribution(resolution, release_catalog, targets, fetcher_options, cache)
       planner = Planner.new(release_catalog: release_catalog, effective: effective, spec_file: resolution.spec_file,
                             ancestors: ancestors, inventory: inventory, own: own, revisions: Lock.revisions(recorded),
@@ -74,7 +77,8 @@ module Relspec
 
     # The targets' own ruby-* packages for the gems of the release.
     def self.read_distribution(resolution, release_catalog, targets, fetcher_options, cache)
-      wanted = release_catalog.gems.keys.map { |name| "ruby-#{Debian::Naming.canonical(name)}" }
+      needed = release_catalog.gems.values.flat_map { |archive| archive.runtime_dependencies.map(&:first) }
+      wanted = (release_catalog.gems.keys + needed).uniq.map { |name| "ruby-#{Debian::Naming.canonical(name)}" }
       effective = resolution.effective
       origin = effective.origin("distributions")
       location = origin&.location || resolution.spec_file.location(["release"])

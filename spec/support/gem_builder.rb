@@ -13,13 +13,15 @@ module GemBuilder
 
   # Writes <name>-<version>.gem into +dir+. +dependencies+: name =>
   # requirement; +executable+: a bin/ script; +extension+: a C extension
-  # built by `gem install` (needs ruby-dev).
-  def build(dir, name, version, dependencies: {}, executable: false, extension: false, date: "2020-02-02")
+  # built by `gem install` (needs ruby-dev), whose extconf.rb requires the
+  # gems named in +extension+ if it is a list; +files+: more files.
+  def build(dir, name, version, dependencies: {}, executable: false, extension: false, date: "2020-02-02", files: {})
     Dir.mktmpdir("relspec-gem-src") do |src|
-      files = { "lib/#{name}.rb" => "module #{name.split(/[_-]/).map(&:capitalize).join}\n  VERSION = #{version.inspect}\nend\n" }
+      files = files.merge("lib/#{name}.rb" => "module #{name.split(/[_-]/).map(&:capitalize).join}\n  VERSION = #{version.inspect}\nend\n")
       files["bin/#{name}"] = "#!/usr/bin/env ruby\nputs #{name.inspect}\n" if executable
       if extension
-        files["ext/#{name}/extconf.rb"] = "require \"mkmf\"\ncreate_makefile(\"#{name}/#{name}_ext\")\n"
+        requires = Array(extension == true ? [] : extension).map { |gem| "require #{gem.inspect}\n" }.join
+        files["ext/#{name}/extconf.rb"] = "#{requires}require \"mkmf\"\ncreate_makefile(\"#{name}/#{name}_ext\")\n"
         files["ext/#{name}/#{name}_ext.c"] = "#include <ruby.h>\nvoid Init_#{name}_ext(void) { rb_define_module(\"#{name.capitalize}Ext\"); }\n"
       end
       files.each do |path, content|

@@ -24,7 +24,8 @@ class HttpServer
     "http://127.0.0.1:#{@server.config[:Port]}"
   end
 
-  # +fault+: 404, 500 or :stall (no answer for +seconds+), for paths matching +pattern+.
+  # +fault+: 404, 500, :stall (no answer for +seconds+) or :redirect (302
+  # to the same path below /moved/), for paths matching +pattern+.
   def fail(pattern, fault, seconds: 5)
     @faults[pattern] = [fault, seconds]
   end
@@ -43,10 +44,11 @@ class HttpServer
     case fault
     when 404, 500 then response.status = fault
     when :stall then sleep(seconds)
+    when :redirect then response.set_redirect(WEBrick::HTTPStatus::Found, "#{url}/moved#{path}")
     end
     return if fault
 
-    file = File.join(@root, path.sub(%r{\A/[^/]+/(?=dists/)}, "/"))
+    file = File.join(@root, path.sub(%r{\A/[^/]+/(?=dists/)}, "/").delete_prefix("/moved"))
     if File.file?(file)
       response.body = File.binread(file)
     else

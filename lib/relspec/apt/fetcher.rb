@@ -15,6 +15,7 @@ module Relspec
 
       RETRIES = 3
       BACKOFF = 0.2
+      REDIRECTS = 3
 
       attr_reader :base
 
@@ -70,7 +71,9 @@ module Relspec
       # A 5xx answer: the server may recover.
       class RetryableAnswer < StandardError; end
 
-      def get(uri)
+      # Follows a few redirects (gem servers often send downloads to storage
+      # elsewhere), to http(s) only.
+      def get(uri, redirects = REDIRECTS)
         Net::HTTP.start(uri.host, uri.port, use_ssl: uri.scheme == "https", open_timeout: @timeout,
                                             read_timeout: @timeout, ssl_timeout: @timeout) do |http|
           response = http.request(Net::HTTP::Get.new(uri))
@@ -78,9 +81,19 @@ module Relspec
           when Net::HTTPSuccess then response.body.b
           when Net::HTTPNotFound, Net::HTTPGone then nil
           when Net::HTTPServerError then raise RetryableAnswer, "HTTP #{response.code} #{response.message}"
+          when Net::HTTPRedirection then follow(uri, response, redirects)
           else raise Failure, "#{uri}: HTTP #{response.code} #{response.message}"
           end
         end
+      end
+
+      def follow(uri, response, redirects)
+        target = response["location"] && uri.merge(response["location"])
+        unless target && %w[http https].include?(target.scheme) && redirects.positive?
+          raise Failure, "#{uri}: HTTP #{response.code} redirect to #{response['location'].inspect} not followed"
+        end
+
+        get(target, redirects - 1)
       end
 
       def describe(error)

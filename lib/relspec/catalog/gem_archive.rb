@@ -28,7 +28,9 @@ module Relspec
         file = "#{name}-#{version}.gem"
         if source.include?("://") && !source.start_with?("file://")
           origin = "#{source.chomp('/')}/gems/#{file}"
-          path = download(Apt::Fetcher.new(source, timeout: timeout), "gems/#{file}", origin, cache_dir, file)
+          # one cache folder per source: two servers may hold different files under one name
+          cache = cache_dir && File.join(cache_dir, Digest::SHA256.hexdigest(source.chomp("/"))[0, 16])
+          path = download(Apt::Fetcher.new(source, timeout: timeout), "gems/#{file}", origin, cache, file)
         else
           origin = "#{source.chomp('/')}/#{file}"
           path = File.join(File.expand_path(source.delete_prefix("file://"), base_dir), file)
@@ -84,7 +86,7 @@ module Relspec
       def unpack(dir)
         Gem::Package.new(path).extract_files(dir)
         File.binwrite(File.join(dir, "metadata.yml"), metadata_bytes)
-      rescue Gem::Package::Error, Zlib::Error => e
+      rescue Gem::Exception, Zlib::Error => e
         raise Problem, "cannot unpack #{File.basename(path)}: #{e.message}"
       end
 
@@ -95,7 +97,7 @@ module Relspec
         return spec if spec.name == name && spec.version.to_s == version
 
         raise Problem, "#{origin} holds #{spec.name} #{spec.version}, not #{name} #{version}"
-      rescue Gem::Package::Error, Zlib::Error, Psych::Exception, ArgumentError => e
+      rescue Gem::Exception, Zlib::Error, Psych::Exception, ArgumentError => e
         raise Problem, "#{origin} is not a readable gem (#{e.message})"
       end
 

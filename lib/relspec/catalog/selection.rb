@@ -39,11 +39,13 @@ module Relspec
         @problems = []
         @roots = expand_roots(select || catalog.layout)
         selected = closure(@roots)
-        selected.each { |name| check_buildable(@catalog.package(name)) }
-        raise InvalidInput, @problems unless @problems.empty?
-
         @unavailable = unavailable_among(selected).freeze
-        @names = (selected - @unavailable.keys).freeze
+        # what only unavailable packages needed is not part of the release there
+        @names = @unavailable.empty? ? selected : closure(@roots, skip: @unavailable)
+        @names.each { |name| check_buildable(@catalog.package(name)) }
+        raise InvalidInput, @problems.uniq unless @problems.empty?
+
+        @names.freeze
         freeze
       end
 
@@ -72,12 +74,12 @@ module Relspec
         end.uniq
       end
 
-      def closure(roots)
+      def closure(roots, skip: {})
         seen = {}
         queue = roots.reject { |name| excluded?(name) || ignored?(name) }
         until queue.empty?
           name = queue.shift
-          next if seen[name]
+          next if seen[name] || skip.key?(name)
 
           seen[name] = true
           package = @catalog.package(name)

@@ -28,20 +28,22 @@ module Relspec
 
       # Writes the tarball of +checkout+ at +commit+ (nil: the tree as it is,
       # dated +mtime+, a Time) to +path+, with everything under +prefix+/.
-      def write(path, checkout:, commit:, prefix:, mtime:)
+      # +everything+: keep VCS and build folders (an unpacked gem lists its
+      # .gitignore or build/ in its metadata, and must be rebuilt from them).
+      def write(path, checkout:, commit:, prefix:, mtime:, everything: false)
         command =
           if commit && File.exist?(File.join(checkout, ".git"))
             ["git", "-C", checkout, "-c", "tar.umask=0022", "archive", "--format=tar", "--prefix=#{prefix}/", commit]
           else
-            tar_command(checkout, prefix, mtime)
+            tar_command(checkout, prefix, mtime, everything: everything)
           end
         pipe(command, path)
       end
 
-      def tar_command(dir, prefix, mtime)
+      def tar_command(dir, prefix, mtime, everything: false)
+        excludes = everything ? [] : ["--exclude-vcs", "--exclude=./build", "--exclude=./_build"]
         ["tar", "--sort=name", "--format=gnu", "--mtime=@#{mtime.to_i}", "--owner=0", "--group=0", "--numeric-owner",
-         "--mode=u+rwX,go+rX,go-w", "--exclude-vcs", "--exclude=./build", "--exclude=./_build",
-         "--transform=s,^\\.,#{prefix},", "-C", dir, "-cf", "-", "."]
+         "--mode=u+rwX,go+rX,go-w", *excludes, "--transform=s,^\\.,#{prefix},", "-C", dir, "-cf", "-", "."]
       end
 
       # Writes +command+'s output through `gzip -n` to +path+.

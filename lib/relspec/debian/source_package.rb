@@ -92,7 +92,9 @@ module Relspec
       def orig_tarball
         name = OrigTarball.file_name(source, upstream)
         overlay_files = @overlay.files(@substitutions)
-        key = overlay_files.empty? ? "plain" : Digest::SHA256.hexdigest(overlay_files.sort.flatten.join("\0"))[0, 16]
+        # what the tarball is made of besides the commit: a gem's own bytes, an overlay
+        made_of = [@input[:gem]&.sha256, *overlay_files.sort.flatten].compact
+        key = made_of.empty? ? "plain" : Digest::SHA256.hexdigest(made_of.join("\0"))[0, 16]
         path = File.join(@orig_cache, key, name)
         return path if File.file?(path)
 
@@ -106,7 +108,8 @@ module Relspec
                                        mtime: commit_time)
         else
           with_overlaid_tree(overlay_files) do |tree|
-            OrigTarball.write(temporary, checkout: tree, commit: nil, prefix: "#{source}-#{upstream}", mtime: commit_time)
+            OrigTarball.write(temporary, checkout: tree, commit: nil, prefix: "#{source}-#{upstream}", mtime: commit_time,
+                                         everything: !@input[:gem].nil?)
           end
         end
         File.rename(temporary, path)

@@ -22,19 +22,23 @@ module Relspec
 
         found = {}
         problems = []
+        gaps = {}
         targets.each do |target|
           archive = distributions.fetch(target.codename).archive
           next unless archive
 
           repository = Ancestors.reader(archive, spec_dir, fetcher_options, cache)
           found[target] = versions(repository, archive, target, wanted)
+        rescue Apt::Repository::Missing => e
+          # e.g. Ubuntu's arm64 lives on ports.ubuntu.com, not in the amd64 archive
+          gaps[target] = e.message
         rescue Apt::Repository::Error => e
           problems << Diagnostic.error("distribution-archive", "the archive of #{target.codename}: #{e.message}",
                                        location: location, hint: "check distributions.#{target.codename}.archive, or the network")
         end
         raise InvalidInput, problems.uniq(&:message) unless problems.empty?
 
-        new(found, targets.reject { |target| found.key?(target) })
+        new(found, targets.reject { |target| found.key?(target) || gaps.key?(target) }, gaps)
       end
 
       # Newest version of each wanted name over the archive's components.
@@ -51,17 +55,24 @@ module Relspec
       end
       private_class_method :versions
 
-      attr_reader :unknown
+      attr_reader :unknown, :gaps
 
-      # +found+: Target => {name => version}; +unknown+: targets without an archive.
-      def initialize(found, unknown)
+      # +found+: Target => {name => version}; +unknown+: targets without an
+      # archive; +gaps+: Target => why its archive has nothing for it.
+      def initialize(found, unknown, gaps = {})
         @found = found.freeze
         @unknown = unknown.freeze
+        @gaps = gaps.freeze
         freeze
       end
 
       def version_of(name, target)
         @found.dig(target, name)
+      end
+
+      # Whether the target's archive was read (so a name it lacks is known missing).
+      def read?(target)
+        @found.key?(target)
       end
     end
   end

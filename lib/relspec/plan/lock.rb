@@ -61,9 +61,8 @@ module Relspec
       end
 
       # "codename/arch" => {package => {"version", "debian_digest"}} of the
-      # builds an existing lock records.
-      def builds(path)
-        data = read(path)
+      # builds an existing lock's +data+ (read) records.
+      def builds(data)
         return {} unless data
 
         data.fetch("targets", {}).transform_values do |decisions|

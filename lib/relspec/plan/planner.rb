@@ -76,9 +76,13 @@ module Relspec
       def from_distribution(package, target, cause)
         return nil unless package.build_type == "gem" && cause&.kind != :blacklisted
 
+        note_missing_gem_dependencies(package, target)
         name = "ruby-#{Debian::Naming.canonical(package.name)}"
         version = @distribution.version_of(name, target)
-        return nil unless version
+        unless version
+          @notes << "the #{target.codename} archive has no #{name}: gem #{package.name} is packaged here" if @distribution.read?(target)
+          return nil
+        end
 
         if Apt::Version.parse(version).upstream.sub(/[+~](dfsg|ds|repack).*\z/, "") == upstream(package)
           return Decision.new(package: package.name, kind: :system, deb_name: name, version: version).freeze
@@ -218,11 +222,28 @@ module Relspec
       end
 
       def note_gems_without_archive
-        return if @distribution.unknown.empty? || @catalog.packages.values.none? { |package| package.build_type == "gem" }
+        return if @catalog.packages.values.none? { |package| package.build_type == "gem" }
 
         codenames = @distribution.unknown.map(&:codename).uniq.sort
-        @notes << "gems are packaged here on #{codenames.join(', ')}: no distribution archive to take ruby-* packages " \
-                  "from (distributions.<codename>.archive)"
+        unless codenames.empty?
+          @notes << "gems are packaged here on #{codenames.join(', ')}: no distribution archive to take ruby-* " \
+                    "packages from (distributions.<codename>.archive)"
+        end
+        @distribution.gaps.each { |target, why| @notes << "gems are packaged here on #{target}: #{why}" }
+      end
+
+      # A gem's runtime dependencies outside the release are the
+      # distribution's ruby-<name>; say so when its archive lacks one.
+      def note_missing_gem_dependencies(package, target)
+        return unless @distribution.read?(target)
+
+        package.os_dependencies_for(target.codename).gems.each do |dependency|
+          name = "ruby-#{Debian::Naming.canonical(dependency)}"
+          next if @distribution.version_of(name, target)
+
+          @notes << "gem #{package.name} needs #{dependency}, which the #{target.codename} archive lacks as #{name} " \
+                    "(add it to gems:)"
+        end
       end
 
       def note_shadowing(package, target, providers)

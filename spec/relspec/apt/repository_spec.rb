@@ -127,6 +127,16 @@ RSpec.describe Relspec::Apt::Repository do
     expect(@server.requests.count("/dists/buster/InRelease")).to eq(3)
   end
 
+  it "follows redirects, a bounded number of times" do
+    serve(build_repository)
+    @server.fail(%r{\A/dists/bionic/}, :redirect)
+    expect(reader(@server.url, trusted: true).packages("bionic", "amd64")).not_to be_nil
+    expect(@server.requests).to include("/dists/bionic/InRelease", "/moved/dists/bionic/InRelease")
+    @server.fail(%r{\A(/moved)*/dists/buster/}, :redirect)
+    expect(error_of { reader(@server.url, trusted: true).release("buster") })
+      .to match(%r{/moved/moved/moved/dists/buster/InRelease: HTTP 302 redirect to ".*/moved/moved/moved/moved/dists/buster/InRelease" not followed})
+  end
+
   it "gives up on a server that stalls, after the timeout" do
     serve(build_repository)
     @server.fail(%r{/dists/bionic/InRelease}, :stall, seconds: 3)

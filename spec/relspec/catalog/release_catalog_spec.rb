@@ -91,7 +91,9 @@ RSpec.describe Relspec::Catalog::ReleaseCatalog do
   it "leaves out on a codename what needs an OS dependency marked nonexistent there, and what requires it" do
     base = Dir.mktmpdir("relspec-gaps")
     builder = WorkspaceBuilder.new(base)
-    builder.package("gui/toolkit", type: :cmake, date: "2020-01-01T00:00:00Z", osdeps: ["motif"])
+    builder.package("gui/widgets", type: :cmake, date: "2020-01-01T00:00:00Z")
+    builder.package("gui/toolkit", type: :cmake, date: "2020-01-01T00:00:00Z", osdeps: ["motif"],
+                                   dependencies: ["gui/widgets"])
     builder.package("gui/app", type: :cmake, date: "2020-01-02T00:00:00Z", dependencies: ["gui/toolkit"])
     builder.package("gui/viewer", type: :cmake, date: "2020-01-03T00:00:00Z", dependencies: ["gui/app"])
     builder.package("gui/plugins", type: :cmake, date: "2020-01-04T00:00:00Z", optional: ["gui/toolkit"])
@@ -99,8 +101,9 @@ RSpec.describe Relspec::Catalog::ReleaseCatalog do
     builder.osdeps("motif:\n  debian:\n    buster: nonexistent\n    default: libmotif-dev\n  ubuntu: libmotif-dev\n")
     builder.create
     selections = release("", workspace: builder.root).selections
-    expect(selections["bionic"].names).to eq(%w[gui/app gui/plugins gui/toolkit gui/viewer])
+    expect(selections["bionic"].names).to eq(%w[gui/app gui/plugins gui/toolkit gui/viewer gui/widgets])
     expect(selections["bionic"].unavailable).to eq({})
+    # gui/widgets is left out too: only gui/toolkit needed it
     expect(selections["buster"].names).to eq(%w[gui/plugins])
     expect(selections["buster"].unavailable.transform_values(&:to_h)).to eq(
       "gui/app" => { osdeps: nil, dependency: "gui/toolkit" },

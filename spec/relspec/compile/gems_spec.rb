@@ -14,9 +14,12 @@ RSpec.describe "relspec compile with gems" do
     @dir = Dir.mktmpdir("relspec-gems")
     @fixture = ReleaseFixture.new(@dir)
     gems = File.join(@dir, "gem-server", "gems")
+    # like the real nokogiri, its extconf.rb needs mini_portile2 at build time
     GemBuilder.build(gems, "nokogiri", "1.10.10", dependencies: { "mini_portile2" => "~> 2.4.0" }, executable: true,
-                                                  extension: true)
-    GemBuilder.build(gems, "mini_portile2", "2.4.0", date: "2019-01-05")
+                                                  extension: ["mini_portile2"])
+    # files tar --exclude-vcs would drop; the gem is rebuilt from its file list
+    GemBuilder.build(gems, "mini_portile2", "2.4.0", date: "2019-01-05",
+                                                     files: { ".gitignore" => "tmp/\n", "build/notes.txt" => "notes\n" })
     GemBuilder.build(gems, "mini_portile2", "2.3.0")
     @server = HttpServer.new(File.join(@dir, "gem-server"))
     ubuntu = AptRepositoryBuilder.new(File.join(@dir, "repos", "ubuntu"), codenames: ["bionic"], architectures: ["amd64"])
@@ -49,6 +52,12 @@ RSpec.describe "relspec compile with gems" do
   def control(target, deb)
     File.read(file_in(target, deb, "*.dsc"))
   end
+
+  # The environment of a builder, not of this test run: under `bundle exec`
+  # every ruby child (gem install's extconf.rb included) would see only the
+  # test bundle's gems.
+  OUTSIDE_BUNDLE = %w[RUBYOPT RUBYLIB BUNDLE_GEMFILE BUNDLER_SETUP BUNDLE_BIN_PATH BUNDLER_VERSION GEM_HOME GEM_PATH]
+                   .to_h { |name| [name, nil] }.freeze
 
   let(:nokogiri) { "rock-gemrel-ruby-nokogiri" }
   let(:portile) { "rock-gemrel-ruby-mini-portile2" }
@@ -105,13 +114,20 @@ RSpec.describe "relspec compile with gems" do
   end
 
   it "emits sources that build into gems installed under the release prefix, extension compiled" do
+    expect(Process.uid).to eq(0), "this test installs a .deb: run it as root (CI does)"
     Dir.mktmpdir("relspec-gem-build") do |work|
-      [nokogiri, portile].each do |deb|
+      # mini_portile2 first, installed (as the builder would from its
+      # repository), then nokogiri with its build dependencies checked: its
+      # extconf.rb finds mini_portile2 in the release prefix through GEM_PATH
+      [portile, nokogiri].each do |deb|
         output, status = Open3.capture2e("dpkg-source", "-x", file_in("buster-amd64", deb, "*.dsc"), deb, chdir: work)
         expect(status).to be_success, output
-        # -d: the distribution's ruby and ruby-dev are installed, the release's own package is not
-        output, status = Open3.capture2e("dpkg-buildpackage", "-us", "-uc", "-b", "-d", chdir: File.join(work, deb))
+        output, status = Open3.capture2e(OUTSIDE_BUNDLE, "dpkg-buildpackage", "-us", "-uc", "-b", chdir: File.join(work, deb))
         expect(status).to be_success, output.lines.last(20).join
+        next unless deb == portile
+
+        output, status = Open3.capture2e("dpkg", "-i", Dir.glob(File.join(work, "#{portile}_*.deb")).first)
+        expect(status).to be_success, output
       end
       deb = Dir.glob(File.join(work, "#{nokogiri}_1.10.10-1~buster_amd64.deb")).first
       expect(deb).not_to be_nil
@@ -121,11 +137,9 @@ RSpec.describe "relspec compile with gems" do
       prefix = File.join(root, "opt/rock/gemrel", nokogiri)
       expect(File).to exist(File.join(prefix, "lib/ruby/gems/gems/nokogiri-1.10.10/lib/nokogiri.rb"))
       expect(Dir.glob(File.join(prefix, "lib/ruby/gems/**/nokogiri_ext.so"))).not_to be_empty
-      # outside of the test run's bundle, with both gems' env.sh applied, as
-      # a user of the release would run it
+      # with both gems' env.sh applied, as a user of the release would run it
       gem_path = [prefix, File.join(root, "opt/rock/gemrel", portile)].map { |dir| File.join(dir, "lib/ruby/gems") }
-      env = { "GEM_PATH" => gem_path.join(":"), "GEM_HOME" => nil, "RUBYOPT" => nil,
-              "BUNDLE_GEMFILE" => nil, "BUNDLER_SETUP" => nil, "RUBYLIB" => nil }
+      env = OUTSIDE_BUNDLE.merge("GEM_PATH" => gem_path.join(":"))
       output, status = Open3.capture2e(env, "ruby", "-e", 'require "nokogiri/nokogiri_ext"; print NokogiriExt.name')
       expect([output, status.success?]).to eq(["NokogiriExt", true])
       output, status = Open3.capture2e(env, "ruby", File.join(prefix, "bin", "nokogiri"))
@@ -133,7 +147,11 @@ RSpec.describe "relspec compile with gems" do
       fields, = Open3.capture2("dpkg-deb", "-f", deb, "Depends")
       expect(fields).to include("#{portile} (>= 2.4.0-1~buster)", "ruby")
       expect(fields).not_to include("ruby-dev")
+      portile_contents, = Open3.capture2("dpkg-deb", "-c", Dir.glob(File.join(work, "#{portile}_*.deb")).first)
+      expect(portile_contents).to include("gems/mini_portile2-2.4.0/.gitignore", "gems/mini_portile2-2.4.0/build/notes.txt")
     end
+  ensure
+    system("dpkg", "--purge", portile, out: File::NULL, err: File::NULL)
   end
 
   it "renders the gems into the osdeps files under the names that provide them" do
@@ -142,6 +160,31 @@ RSpec.describe "relspec compile with gems" do
                                           "debian" => { "10,buster" => portile })
     expect(osdeps["nokogiri"]).to eq("ubuntu,debian" => { "18.04,bionic,beaver" => nokogiri },
                                      "debian" => { "10,buster" => nokogiri })
+  end
+
+  it "keeps what the distribution provides in osdeps files rendered from the repositories" do
+    run = relspec("osdeps", "specs/gemrel.yml", "--from-repository", chdir: @dir)
+    expect(run.exit_code).to eq(0), run.stderr
+    osdeps = YAML.safe_load(File.read(File.join(@dir, "releases", "gemrel", "osdeps", "gemrel-amd64.yml")))
+    # nothing of gemrel is published yet: only the distribution's package remains
+    expect(osdeps).to eq("mini_portile2" => { "ubuntu,debian" => { "18.04,bionic,beaver" => "ruby-mini-portile2" } })
+    expect(run.stderr).to include("missing from the repository: buster/amd64 mini_portile2")
+    expect(run.stderr).not_to include("bionic/amd64 mini_portile2")
+  ensure
+    relspec("compile", "specs/gemrel.yml", "--out", "out", chdir: @dir) # the full osdeps files again
+  end
+
+  it "refuses a .gem that differs from the one the lock recorded for that version" do
+    source = File.join(@dir, "changing-gems")
+    GemBuilder.build(source, "mini_portile2", "2.4.0", date: "2019-01-05")
+    spec = @fixture.spec("changing", "targets: { bionic: [amd64] }\nselect: [base/cmake]\n" \
+                                     "gems: { mini_portile2: \"2.4.0\" }\ngem_source: ../changing-gems\n")
+    expect(relspec("plan", spec, "--write", chdir: @dir).exit_code).to eq(0)
+    GemBuilder.build(source, "mini_portile2", "2.4.0", date: "2019-01-06") # same version, other bytes
+    run = relspec("plan", spec, "--write", chdir: @dir)
+    expect(run.exit_code).to eq(1)
+    expect(run.stderr).to include("specs/changing.yml:5:24: error[gem-changed]: gem mini_portile2 2.4.0 from " \
+                                  "../changing-gems/mini_portile2-2.4.0.gem is not the .gem the lock recorded")
   end
 
   it "passes lintian without errors" do
