@@ -64,6 +64,11 @@ module Relspec
     def self.with_recorded_digests(plan, recorded)
       return plan if recorded.empty?
 
+      last_builds = plan.targets.keys.to_h do |target|
+        not_built = plan.targets.fetch(target).reject { |_, decision| decision.build? || decision.published? }.keys +
+                    plan.unavailable.fetch(target).keys
+        [target, recorded.fetch(target.to_s, {}).slice(*not_built)]
+      end
       targets = plan.targets.to_h do |target, decisions|
         [target, decisions.transform_values do |decision|
           entry = recorded.dig(target.to_s, decision.package)
@@ -72,7 +77,7 @@ module Relspec
           Decision.new(**decision.each_pair.to_h, debian_digest: entry["debian_digest"]).freeze
         end]
       end
-      plan.with_targets(targets)
+      plan.with_targets(targets, last_builds: last_builds.reject { |_, builds| builds.empty? })
     end
 
     # The targets' own ruby-* packages for the gems of the release.

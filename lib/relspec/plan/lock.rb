@@ -32,6 +32,9 @@ module Relspec
             plan.unavailable.fetch(target).each do |name, cause|
               entries[name] = { "decision" => "unavailable", "causes" => cause.chain }
             end
+            plan.last_builds.fetch(target, {}).each do |name, build|
+              entries[name] = entries[name].merge("last_build" => build) if entries[name]
+            end
             [target.to_s, entries.sort.to_h]
           end,
           "warnings" => plan.warnings.map(&:message), "notes" => plan.notes
@@ -60,13 +63,19 @@ module Relspec
         Digest::SHA256.hexdigest(JSON.generate(effective.to_h))
       end
 
+      BUILT = %w[build published].freeze
+
       # "codename/arch" => {package => {"version", "debian_digest"}} of the
-      # builds an existing lock's +data+ (read) records.
+      # builds an existing lock's +data+ (read) records: this release's builds,
+      # and the last build of packages it did not build that time.
       def builds(data)
         return {} unless data
 
         data.fetch("targets", {}).transform_values do |decisions|
-          decisions.select { |_, decision| %w[build published].include?(decision["decision"]) }
+          decisions.each_with_object({}) do |(name, decision), out|
+            build = BUILT.include?(decision["decision"]) ? decision : decision["last_build"]
+            out[name] = build.slice("version", "debian_digest") if build.is_a?(Hash) && build["version"]
+          end
         end
       end
 

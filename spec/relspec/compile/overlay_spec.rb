@@ -142,4 +142,33 @@ RSpec.describe "the lock between plan and compile" do
       expect(run.stderr).to match(%r{\Arelspec: error: cannot write #{Regexp.escape(dir)}/missing/folder/catalog.yml: No such file or directory})
     end
   end
+
+  it "goes on from the last revision when a package is built again after being inherited for a while" do
+    Dir.mktmpdir("relspec-last-build") do |dir|
+      fixture = ReleaseFixture.new(dir)
+      fixture.repository("parent", [%w[bionic amd64]], ReleaseFixture::LAYOUT.to_h { |name| [name, {}] })
+      fixture.spec("parent", "targets: { bionic: [amd64] }\nrepository: { path: ../repos/parent, trusted: true }\n" \
+                             "maintainer: Demo Packaging <demo@example.org>\n")
+      blacklisted = "parent: parent\nblacklist: [{ match: base/types, reason: new API }]\n"
+      compile = -> { relspec("compile", "specs/child.yml", "--out", "out", chdir: dir) }
+      lock = -> { YAML.safe_load(File.read(File.join(dir, "releases", "child", "lock.yml"))) }
+      fixture.spec("child", blacklisted, workspace: :checkouts)
+      expect(compile.call.exit_code).to eq(0)
+      first = lock.call.dig("targets", "bionic/amd64", "base/types")
+      expect(first["version"]).to end_with("-1~bionic")
+
+      # the blacklist goes: base/types is inherited, and the lock keeps its last build
+      fixture.spec("child", "parent: parent\n", workspace: :checkouts)
+      expect(relspec("plan", "specs/child.yml", "--write", chdir: dir).exit_code).to eq(0)
+      expect(lock.call.dig("targets", "bionic/amd64", "base/types"))
+        .to include("decision" => "inherit", "last_build" => first.slice("version", "debian_digest"))
+
+      # built again with another debian/: the next revision, never a second, different -1
+      fixture.spec("child", blacklisted, workspace: :checkouts)
+      FileUtils.mkdir_p(File.join(dir, "overlays", "base", "types", "debian"))
+      File.write(File.join(dir, "overlays", "base", "types", "debian", "README.Debian"), "Built for the child.\n")
+      expect(compile.call.exit_code).to eq(0)
+      expect(lock.call.dig("targets", "bionic/amd64", "base/types", "version")).to end_with("-2~bionic")
+    end
+  end
 end
