@@ -2,6 +2,7 @@
 
 require "digest"
 require "fileutils"
+require "tmpdir"
 require "zlib"
 require_relative "../apt/fetcher"
 require_relative "../atomic_file"
@@ -20,8 +21,8 @@ module Relspec
       attr_reader :name, :version, :path, :sha256, :spec, :origin
 
       # +source+: the spec's gem_source (an http(s)/file URL, or a folder
-      # relative to +base_dir+); +cache_dir+: where downloads are kept (nil:
-      # a temporary copy is not kept, the gem is downloaded on every run).
+      # relative to +base_dir+); +cache_dir+: where downloads are kept (nil,
+      # when there is no home: a folder of the user's in the system's temp).
       def self.fetch(name, version, source:, base_dir:, cache_dir:, timeout: 10)
         # Loaded here: RubyGems' package code costs 70 ms, and most releases have no gems.
         require "rubygems/package"
@@ -29,7 +30,8 @@ module Relspec
         if source.include?("://") && !source.start_with?("file://")
           origin = "#{source.chomp('/')}/gems/#{file}"
           # one cache folder per source: two servers may hold different files under one name
-          cache = cache_dir && File.join(cache_dir, Digest::SHA256.hexdigest(source.chomp("/"))[0, 16])
+          cache_dir ||= File.join(Dir.tmpdir, "relspec-gems-#{Process.uid}")
+          cache = File.join(cache_dir, Digest::SHA256.hexdigest(source.chomp("/"))[0, 16])
           path = download(Apt::Fetcher.new(source, timeout: timeout), "gems/#{file}", origin, cache, file)
         else
           origin = "#{source.chomp('/')}/#{file}"
@@ -40,16 +42,15 @@ module Relspec
       end
 
       def self.download(fetcher, relative, origin, cache_dir, file)
-        cached = cache_dir && File.join(cache_dir, file)
-        return cached if cached && File.file?(cached)
+        cached = File.join(cache_dir, file)
+        return cached if File.file?(cached)
 
         bytes = fetcher.fetch(relative)
         raise Problem, "#{origin} does not exist (HTTP 404)" unless bytes
 
-        target = cached || File.join(Dir.mktmpdir("relspec-gem"), file)
-        FileUtils.mkdir_p(File.dirname(target))
-        AtomicFile.write(target, bytes)
-        target
+        FileUtils.mkdir_p(cache_dir)
+        AtomicFile.write(cached, bytes)
+        cached
       rescue Apt::Fetcher::Failure => e
         raise Problem, "cannot download #{origin}: #{e.message}"
       end
