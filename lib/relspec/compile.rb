@@ -111,10 +111,10 @@ module Relspec
       recorded = @previous.dig(target.to_s, decision.package)
       return 1 unless recorded
 
-      old_upstream, old_revision = recorded["version"].to_s.match(/\A(.*)-(\d+)~[a-z0-9-]+\z/)&.captures
+      old_upstream, old_revision = Debian::PackageVersion.split(recorded["version"])
       return 1 unless old_upstream == upstream
 
-      recorded["debian_digest"] == digest || recorded["debian_digest"].nil? ? old_revision.to_i : old_revision.to_i + 1
+      recorded["debian_digest"] == digest || recorded["debian_digest"].nil? ? old_revision : old_revision + 1
     end
 
     def source_package(input, version, revision, package, overlay, digest)
@@ -137,7 +137,7 @@ module Relspec
         package: package, deb_name: decision.deb_name, upstream: upstream, codename: target.codename,
         release: @effective.release, maintainer: @effective["maintainer"], install_dir: install_dir_of(decision),
         dependencies: dependencies_of(package, decisions), apt: os.apt,
-        gems: (os.gems - @planned.release_catalog.gems.keys).map { |gem| "ruby-#{Debian::Naming.canonical(gem)}" },
+        gems: (os.gems - @planned.release_catalog.gems.keys).map { |gem| Debian::Naming.distribution_gem(gem) },
         gem: @planned.release_catalog.gems[package.name]
       }
     end

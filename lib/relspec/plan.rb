@@ -46,7 +46,7 @@ module Relspec
       planner = Planner.new(release_catalog: release_catalog, effective: effective, spec_file: resolution.spec_file,
                             ancestors: ancestors, inventory: inventory, own: own, revisions: Lock.revisions(recorded),
                             distribution: distribution)
-      Result.new(resolution: resolution, plan: with_recorded_digests(planner.plan, recorded), lock_path: lock_path,
+      Result.new(resolution: resolution, plan: with_recorded_builds(planner.plan, recorded), lock_path: lock_path,
                  recorded: recorded,
                  spec_digest: Lock.spec_digest(effective), own: own, release_catalog: release_catalog,
                  ancestors: ancestors)
@@ -58,10 +58,11 @@ module Relspec
       DisplayPath.of(File.dirname(File.dirname(File.expand_path(path))))
     end
 
-    # The debian/ digests the lock recorded (compile writes them) stay with
-    # the builds whose version did not change, so that writing the lock from
-    # `plan --write` never loses what decides the next revision.
-    def self.with_recorded_digests(plan, recorded)
+    # What the lock recorded of earlier builds stays: the debian/ digests of
+    # the builds whose version did not change, and the last build of packages
+    # not built now, so that writing the lock from `plan --write` never loses
+    # what decides the next revision.
+    def self.with_recorded_builds(plan, recorded)
       return plan if recorded.empty?
 
       last_builds = plan.targets.keys.to_h do |target|
@@ -83,7 +84,7 @@ module Relspec
     # The targets' own ruby-* packages for the gems of the release.
     def self.read_distribution(resolution, release_catalog, targets, fetcher_options, cache)
       needed = release_catalog.gems.values.flat_map { |archive| archive.runtime_dependencies.map(&:first) }
-      wanted = (release_catalog.gems.keys + needed).uniq.map { |name| "ruby-#{Debian::Naming.canonical(name)}" }
+      wanted = (release_catalog.gems.keys + needed).uniq.map { |name| Debian::Naming.distribution_gem(name) }
       effective = resolution.effective
       origin = effective.origin("distributions")
       location = origin&.location || resolution.spec_file.location(["release"])
@@ -105,6 +106,6 @@ module Relspec
       raise InvalidInput, [Diagnostic.error("own-repository", "the repository of #{resolution.effective.release}: #{e.message}",
                                             location: spec_file.key_location(["repository"]))]
     end
-    private_class_method :read_own, :read_distribution, :with_recorded_digests
+    private_class_method :read_own, :read_distribution, :with_recorded_builds
   end
 end

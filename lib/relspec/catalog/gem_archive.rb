@@ -27,12 +27,13 @@ module Relspec
         # Loaded here: RubyGems' package code costs 70 ms, and most releases have no gems.
         require "rubygems/package"
         file = "#{name}-#{version}.gem"
-        if source.include?("://") && !source.start_with?("file://")
+        fetcher = Apt::Fetcher.new(source, timeout: timeout)
+        if fetcher.remote?
           origin = "#{source.chomp('/')}/gems/#{file}"
           # one cache folder per source: two servers may hold different files under one name
           cache_dir ||= File.join(Dir.tmpdir, "relspec-gems-#{Process.uid}")
           cache = File.join(cache_dir, Digest::SHA256.hexdigest(source.chomp("/"))[0, 16])
-          path = download(Apt::Fetcher.new(source, timeout: timeout), "gems/#{file}", origin, cache, file)
+          path = download(fetcher, "gems/#{file}", origin, cache, file)
         else
           origin = "#{source.chomp('/')}/#{file}"
           path = File.join(File.expand_path(source.delete_prefix("file://"), base_dir), file)

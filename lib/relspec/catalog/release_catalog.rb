@@ -75,8 +75,7 @@ module Relspec
       def self.add_gems(catalog, names, resolution, fetch)
         effective = resolution.effective
         fetch ||= ReleaseGems.fetcher(effective, File.dirname(resolution.spec_file.path))
-        origin = effective.origin("gems")
-        locate = ->(name) { origin&.default? ? nil : origin&.file&.location(["gems", name]) }
+        locate = ->(name) { effective.entry_location("gems", name) }
         ReleaseGems.add(catalog, effective["gems"] || {}, names, fetch: fetch, locate: locate)
       end
 

@@ -62,7 +62,7 @@ module Relspec
       def expand_roots(requested)
         requested.flat_map do |name|
           if @catalog.metapackage?(name)
-            @catalog.metapackages[name].reject { |member| unavailable?(member) }
+            @catalog.metapackages[name].reject { |member| dropped?(member) }
           elsif @catalog.package?(name)
             problem("excluded-package", "#{name} is selected but excluded by the workspace manifest",
                     location: @locate.call(name)) if excluded?(name)
@@ -84,7 +84,7 @@ module Relspec
           seen[name] = true
           package = @catalog.package(name)
           queue.concat(required(package))
-          queue.concat(package.optional_dependencies.reject { |dep| unavailable?(dep) || !@catalog.package?(dep) })
+          queue.concat(package.optional_dependencies.reject { |dep| dropped?(dep) || !@catalog.package?(dep) })
         end
         seen.keys.sort
       end
@@ -125,7 +125,7 @@ module Relspec
         end
       end
 
-      def unavailable?(name)
+      def dropped?(name)
         excluded?(name) || ignored?(name)
       end
 

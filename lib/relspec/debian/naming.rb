@@ -13,6 +13,12 @@ module Relspec
         package_name.tr("/_", "--").downcase
       end
 
+      # The name Debian gives the package of gem +gem+ (ruby-concurrent-ruby
+      # for concurrent-ruby; Debian sometimes differs, see docs/compile.md).
+      def distribution_gem(gem)
+        "ruby-#{canonical(gem)}"
+      end
+
       # The name package +package_name+ (of +build_type+) has in release
       # +release+ whose Debian names start with +prefix+.
       def deb_name(prefix:, release:, package_name:, build_type:)

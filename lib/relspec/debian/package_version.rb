@@ -34,9 +34,17 @@ module Relspec
         "#{upstream}-#{revision}~#{codename}"
       end
 
+      FULL = /\A(.*)-(\d+)~[a-z0-9-]+\z/
+
+      # [upstream, revision] of a full version we made (nil for anything else).
+      def split(version)
+        upstream, revision = version.to_s.match(FULL)&.captures
+        upstream && [upstream, revision.to_i]
+      end
+
       # The upstream part of a full version we made (nil for anything else).
       def upstream_of(version)
-        version[/\A(.*)-\d+~[a-z0-9-]+\z/, 1]
+        split(version)&.first
       end
 
       # A manifest version that Debian accepts as the start of an upstream

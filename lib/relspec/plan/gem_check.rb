@@ -17,7 +17,6 @@ module Relspec
       # +locked+: the previous lock's data (Lock.read) or nil.
       def call(locked, release_catalog, resolution)
         recorded = (locked && locked["packages"]) || {}
-        origin = resolution.effective.origin("gems")
         problems = release_catalog.gems.filter_map do |name, archive|
           before = recorded[name]
           next unless before && before["version"] == Debian::PackageVersion.of_gem(archive.version) &&
@@ -25,7 +24,8 @@ module Relspec
 
           Diagnostic.error("gem-changed", "gem #{name} #{archive.version} from #{archive.origin} is not the .gem the lock " \
                                           "recorded (SHA256 #{before['commit'][0, 12]}… then, #{archive.sha256[0, 12]}… now)",
-                           location: (origin&.file || resolution.spec_file).location(["gems", name]),
+                           location: resolution.effective.entry_location("gems", name) ||
+                                     resolution.spec_file.location(["gems"]),
                            hint: "a repository cannot take a different orig tarball under the same version: restore " \
                                  "the recorded .gem, or package another version")
         end

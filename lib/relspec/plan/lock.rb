@@ -6,6 +6,7 @@ require "json"
 require_relative "../yaml/writer"
 require_relative "../yaml/located_document"
 require_relative "../atomic_file"
+require_relative "../debian/package_version"
 
 module Relspec
   module Plan
@@ -93,8 +94,8 @@ module Relspec
       def revisions(builds)
         builds.transform_values do |decisions|
           decisions.each_with_object({}) do |(name, decision), out|
-            upstream, revision = decision["version"].to_s.match(/\A(.*)-(\d+)~[a-z0-9-]+\z/)&.captures
-            out[name] = { upstream => revision.to_i } if upstream
+            upstream, revision = Debian::PackageVersion.split(decision["version"])
+            out[name] = { upstream => revision } if upstream
           end
         end
       end

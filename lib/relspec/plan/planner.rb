@@ -77,7 +77,7 @@ module Relspec
         return nil unless package.build_type == "gem" && cause&.kind != :blacklisted
 
         note_missing_gem_dependencies(package, target)
-        name = "ruby-#{Debian::Naming.canonical(package.name)}"
+        name = Debian::Naming.distribution_gem(package.name)
         version = @distribution.version_of(name, target)
         unless version
           @notes << "the #{target.codename} archive has no #{name}: gem #{package.name} is packaged here" if @distribution.read?(target)
@@ -238,7 +238,7 @@ module Relspec
         return unless @distribution.read?(target)
 
         package.os_dependencies_for(target.codename).gems.each do |dependency|
-          name = "ruby-#{Debian::Naming.canonical(dependency)}"
+          name = Debian::Naming.distribution_gem(dependency)
           next if @distribution.version_of(name, target)
 
           @notes << "gem #{package.name} needs #{dependency}, which the #{target.codename} archive lacks as #{name} " \

@@ -35,7 +35,7 @@ module Relspec
             lines << "    #{decision.cause}"
           end
         end
-        { "taken from the distribution on" => system_groups, "not available on" => unavailable_groups }.each do |title, groups|
+        other_groups.each do |title, groups|
           groups.each do |targets, texts|
             lines << "" << "#{title} #{targets.join(', ')}:"
             width = texts.keys.map(&:size).max
@@ -58,9 +58,9 @@ module Relspec
           lines << "" << "**Builds on #{targets.join(', ')}**" << ""
           builds.each { |decision| lines << "- `#{decision.package}` (`#{decision.deb_name}`): #{decision.cause}" }
         end
-        { "Taken from the distribution on" => system_groups, "Not available on" => unavailable_groups }.each do |title, groups|
+        other_groups.each do |title, groups|
           groups.each do |targets, texts|
-            lines << "" << "**#{title} #{targets.join(', ')}**" << ""
+            lines << "" << "**#{title.capitalize} #{targets.join(', ')}**" << ""
             texts.each { |name, text| lines << "- `#{name}`: #{text}" }
           end
         end
@@ -83,6 +83,11 @@ module Relspec
       def columns
         optional = %i[system unavailable].select { |column| @targets.any? { |target| @plan.counts(target)[column].positive? } }
         %i[inherit build published] + optional
+      end
+
+      # Packages that are neither inherited nor built: [[title, groups]].
+      def other_groups
+        [["taken from the distribution on", system_groups], ["not available on", unavailable_groups]]
       end
 
       def unavailable_groups

@@ -51,6 +51,13 @@ module Relspec
         origins.fetch("pins", {})[package]
       end
 
+      # Where entry +name+ of mapping +key+ (inherited as a whole) was
+      # written, or nil for a built-in default.
+      def entry_location(key, name)
+        origin = origins[key]
+        origin && !origin.default? ? origin.file.location([key, name]) : nil
+      end
+
       # Values in KEYS order, absent keys left out.
       def to_h
         KEYS.each_with_object({}) { |key, out| out[key] = values[key] if values.key?(key) }
