@@ -36,7 +36,13 @@ module Relspec
         @dependencies = dependencies.uniq.sort.freeze
         @optional_dependencies = optional_dependencies.uniq.sort.freeze
         @os_dependencies = os_dependencies.sort.to_h.freeze
+        @build_dependencies = (@dependencies + @optional_dependencies).uniq.sort.freeze
         freeze
+      end
+
+      # Every package of the workspace this one needs when it is built.
+      def build_dependencies
+        @build_dependencies
       end
 
       def os_dependencies_for(codename)

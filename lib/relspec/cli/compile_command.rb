@@ -7,7 +7,8 @@ module Relspec
     # `relspec compile SPEC`: the source packages of everything the release
     # builds, plan.yml per target, the lock and the osdeps files.
     class CompileCommand
-      def initialize(path:, out:, jobs:, timeout:, out_io:, progress_io: nil)
+      def initialize(path:, out:, jobs:, timeout:, out_io:, progress_io: nil, discard_lock: false)
+        @discard_lock = discard_lock
         @path = path
         @out = out
         @jobs = jobs
@@ -17,7 +18,8 @@ module Relspec
       end
 
       def call
-        result = Compile.run(@path, out: @out, jobs: @jobs, timeout: @timeout, progress: progress_bar)
+        result = Compile.run(@path, out: @out, jobs: @jobs, timeout: @timeout, progress: progress_bar,
+                                    discard_lock: @discard_lock)
         if result.written.empty? && !result.lock_changed && result.osdeps_written.zero?
           @io.puts("#{result.release}: nothing changed (#{result.unchanged.size} source packages up to date)")
         else

@@ -17,6 +17,8 @@ module Relspec
         true
       end
 
+      DISCARD_LOCK = "Start over when releases/<release>/lock.yml cannot be read (its build history is lost)"
+
       class_option :debug, type: :boolean, default: false, desc: "Show backtraces of internal errors"
       class_option :quiet, type: :boolean, default: false, desc: "No progress output"
 
@@ -65,10 +67,12 @@ module Relspec
       option :format, enum: %w[text json markdown], default: "text", desc: "Output format"
       option :target, type: :string, desc: "Only this target (codename/arch)"
       option :timeout, type: :numeric, default: 10, desc: "HTTP timeout in seconds"
+      option :discard_lock, type: :boolean, default: false, desc: DISCARD_LOCK
       def plan(path)
         require_relative "plan_command"
         finish PlanCommand.new(path: path, format: options[:format], write: options[:write], target: options[:target],
-                               timeout: options[:timeout], out: $stdout, err: $stderr).call
+                               timeout: options[:timeout], out: $stdout, err: $stderr,
+                               discard_lock: options[:discard_lock]).call
       end
 
       desc "compile SPEC", "Emit the Debian source packages the release must build, plan.yml, lock and osdeps"
@@ -82,10 +86,12 @@ module Relspec
       option :out, type: :string, default: "build", desc: "Where the source packages go"
       option :jobs, type: :numeric, default: 2, desc: "Packages emitted in parallel"
       option :timeout, type: :numeric, default: 10, desc: "HTTP timeout in seconds"
+      option :discard_lock, type: :boolean, default: false, desc: DISCARD_LOCK
       def compile(path)
         require_relative "compile_command"
         finish CompileCommand.new(path: path, out: options[:out], jobs: options[:jobs], timeout: options[:timeout],
-                                  out_io: $stdout, progress_io: options[:quiet] ? nil : $stderr).call
+                                  out_io: $stdout, progress_io: options[:quiet] ? nil : $stderr,
+                                  discard_lock: options[:discard_lock]).call
       end
 
       desc "why SPEC PACKAGE", "Explain one package's decision, with its full cause chain"

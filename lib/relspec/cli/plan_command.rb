@@ -2,13 +2,15 @@
 
 require_relative "../plan"
 require_relative "../plan/report"
+require_relative "discarded_lock"
 
 module Relspec
   module CLI
     # `relspec plan SPEC`: what the release inherits, builds and has already
     # published, and why. Writes the lock only with --write.
     class PlanCommand
-      def initialize(path:, format:, write:, target:, timeout:, out:, err:)
+      def initialize(path:, format:, write:, target:, timeout:, out:, err:, discard_lock: false)
+        @discard_lock = discard_lock
         @path = path
         @format = format
         @write = write
@@ -19,10 +21,11 @@ module Relspec
       end
 
       def call
-        result = Plan.compute(@path, timeout: @timeout)
+        result = Plan.compute(@path, timeout: @timeout, discard_lock: @discard_lock)
+        DiscardedLock.warn(result, @err)
         plan = result.plan
         targets = selected_targets(plan)
-        report = Plan::Report.new(plan, result.spec_digest, targets: targets)
+        report = Plan::Report.new(plan, result.lock, targets: targets)
         @out.write(render(report))
         write_lock(result) if @write
         0
@@ -51,7 +54,7 @@ module Relspec
       end
 
       def write_lock(result)
-        changed = Plan::Lock.write(result.lock_path, result.plan, result.spec_digest)
+        changed = result.write_lock
         @err.puts(changed ? "wrote #{result.lock_path}" : "#{result.lock_path} is up to date")
       end
     end

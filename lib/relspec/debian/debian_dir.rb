@@ -24,10 +24,13 @@ module Relspec
       BUILD_TOOLS = { "cmake" => ["cmake"], "orogen" => ["cmake"], "autotools" => %w[autoconf automake libtool],
                       "ruby" => %w[ruby git], "gem" => ["ruby"], "import" => [], "archive" => [], "meta" => [] }.freeze
 
-      # +revision+ stays a placeholder when computing the digest of debian/,
-      # which must not depend on the revision it decides.
-      def self.render(input, revision:)
-        new(input).render(revision)
+      # Stands for the version in the debian/ whose digest decides the
+      # revision (the digest must not depend on what it decides).
+      VERSION_PLACEHOLDER = "@RELSPEC_VERSION@"
+
+      # +version+: the PackageVersion, or nil for the digest's rendering.
+      def self.render(input, version:)
+        new(input).render(version)
       end
 
       def initialize(input)
@@ -35,10 +38,10 @@ module Relspec
       end
 
       # {relative path => [content, mode]}
-      def render(revision)
+      def render(version)
         files = {
           "control" => template("control.erb"),
-          "changelog" => template("changelog.erb", version: full_version(revision)),
+          "changelog" => template("changelog.erb", version: (version || VERSION_PLACEHOLDER).to_s),
           "copyright" => template("copyright.erb"),
           "rules" => template("rules.erb", body: template("rules_#{rules_kind}.erb")),
           "source/format" => "3.0 (quilt)\n",
@@ -115,10 +118,6 @@ module Relspec
       def rules_kind
         kind = @in.fetch(:package).build_type
         kind == "archive" ? "import" : kind
-      end
-
-      def full_version(revision)
-        "#{@in.fetch(:upstream)}-#{revision}~#{@in.fetch(:codename)}"
       end
 
       # A gem is architecture-dependent only when it compiles an extension.

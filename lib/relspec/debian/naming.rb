@@ -30,6 +30,24 @@ module Relspec
           end
         "#{prefix}-#{release}-#{kind}#{canonical(package_name)}"
       end
+
+      # The files of a source package, as dpkg-source names them: the epoch
+      # of a version never appears in a file name.
+      def orig_tarball(source, upstream)
+        "#{source}_#{upstream}.orig.tar.gz"
+      end
+
+      def debian_tarball(source, version)
+        "#{source}_#{without_epoch(version)}.debian.tar.xz"
+      end
+
+      def dsc(source, version)
+        "#{source}_#{without_epoch(version)}.dsc"
+      end
+
+      def without_epoch(version)
+        version.to_s.sub(/\A\d+:/, "")
+      end
     end
   end
 end
