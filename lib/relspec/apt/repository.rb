@@ -18,7 +18,7 @@ module Relspec
     # architecture, verified against the SHA256 the Release file gives.
     class Repository
       # Any problem reading the repository; the message names the URL.
-      class Error < StandardError; end
+      class Error < Relspec::RepositoryError; end
 
       # The repository has no such codename, or no index for that
       # architecture: for a release's own repository that only means nothing
@@ -29,7 +29,9 @@ module Relspec
 
       attr_reader :fetcher
 
-      def initialize(fetcher, keyring: nil, trusted: false, cache: Cache.new(nil))
+      # +clock+ gives the current time, against which Valid-Until is checked.
+      def initialize(fetcher, keyring: nil, trusted: false, cache: Cache.new(nil), clock: -> { Time.now })
+        @clock = clock
         @fetcher = fetcher
         @keyring = keyring
         @trusted = trusted
@@ -57,7 +59,7 @@ module Relspec
 
         path, kind = listed.first
         PackageIndex.parse(decompress(index_bytes(codename, release, path), kind, "#{url}/dists/#{codename}/#{path}"))
-      rescue Deb822::ParseError, ArgumentError => e
+      rescue Deb822::ParseError, PackageIndex::Invalid => e
         raise Error, "#{url}/dists/#{codename}/#{path}: malformed index: #{e.message}"
       end
 
@@ -75,11 +77,24 @@ module Relspec
 
             [detached_content(plain, base), plain]
           end
-        ReleaseFile.parse(text, raw: raw)
+        check_release(ReleaseFile.parse(text, raw: raw), codename, base)
       rescue Fetcher::Failure => e
         raise Error, e.message
       rescue Deb822::ParseError, ArgumentError, TypeError => e
         raise Error, "#{url}/#{base}: malformed Release file: #{e.message}"
+      end
+
+      def check_release(release, codename, base)
+        unless release.describes?(codename)
+          raise Error, "#{url}/#{base}: the Release file is of #{[release.codename, release.suite].compact.uniq.join('/')}, " \
+                       "not #{codename} (a Release file served under another distribution's name is refused)"
+        end
+        if release.expired?(@clock.call)
+          raise Error, "#{url}/#{base}: the Release file expired on " \
+                       "#{release.valid_until.strftime('%Y-%m-%d %H:%M:%S UTC')} (Valid-Until); the repository must " \
+                       "be exported again"
+        end
+        release
       end
 
       def clearsigned_content(bytes, where)
@@ -129,7 +144,8 @@ module Relspec
       def decompress(bytes, kind, where)
         text =
           case kind
-          when :gzip then Zlib::GzipReader.new(StringIO.new(bytes)).read
+          # every gzip member, as gzip -d does (GzipReader alone stops after the first)
+          when :gzip then Zlib::GzipReader.zcat(StringIO.new(bytes))
           when :xz then xz_decompress(bytes, where)
           else bytes
           end
