@@ -136,17 +136,45 @@ module Relspec
       {
         package: package, deb_name: decision.deb_name, upstream: upstream, codename: target.codename,
         release: @effective.release, maintainer: @effective["maintainer"], install_dir: install_dir_of(decision),
-        dependencies: dependencies_of(package, decisions), apt: os.apt,
-        gems: (os.gems - @planned.release_catalog.gems.keys).map { |gem| Debian::Naming.distribution_gem(gem) },
+        debhelper_compat: @effective.distributions.fetch(target.codename).debhelper_compat,
+        dependencies: dependencies_of(package, decisions), closure: closure_dirs(package, decisions), apt: os.apt,
+        gems: (os.gems.map { |gem| Debian::Naming.gem_name(gem) } - @planned.release_catalog.gems.keys)
+          .map { |gem| Debian::Naming.distribution_gem(gem) },
         gem: @planned.release_catalog.gems[package.name]
       }
     end
 
     def dependencies_of(package, decisions)
-      (package.dependencies + package.optional_dependencies).uniq.sort.filter_map do |name|
+      direct_dependencies(package).filter_map do |name|
         decision = decisions[name]
         decision && { deb_name: decision.deb_name, version: decision.version, install_dir: install_dir_of(decision) }
       end
+    end
+
+    def direct_dependencies(package)
+      (package.dependencies + package.optional_dependencies).uniq.sort
+    end
+
+    # The prefixes of the whole dependency closure, own and inherited,
+    # breadth first from the package (its direct dependencies by name, then
+    # theirs), each once: a dependency's CMake configuration or pkg-config
+    # file names its own dependencies, which the build must find too.
+    def closure_dirs(package, decisions)
+      seen = {}
+      queue = direct_dependencies(package)
+      dirs = []
+      until queue.empty?
+        name = queue.shift
+        next if seen[name]
+
+        seen[name] = true
+        decision = decisions[name]
+        next unless decision && (dir = install_dir_of(decision))
+
+        dirs << dir
+        queue.concat(direct_dependencies(@catalog.package(name))) if @catalog.package?(name)
+      end
+      dirs.uniq
     end
 
     # The distribution's own packages install into the system: nil.

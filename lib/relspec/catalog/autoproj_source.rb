@@ -82,7 +82,7 @@ module Relspec
             source_dir: entry["source_dir"], checked_out: entry["checked_out"], version: entry["version"],
             summary: entry["summary"], description: entry["description"], license: entry["license"],
             maintainer: entry["maintainer"], dependencies: entry["dependencies"],
-            optional_dependencies: entry["optional_dependencies"],
+            optional_dependencies: entry["optional_dependencies"], defines: entry["defines"],
             os_dependencies: entry["os_dependencies"].transform_values { |deps| OsDependencies.from_h(deps) }
           )
           [name, package]
