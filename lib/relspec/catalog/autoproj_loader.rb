@@ -75,7 +75,7 @@ module Relspec
       # workspace, autoproj's included, is raised as a WorkspaceProblem.
       def load(root, targets)
         install_patches
-        load_all(root, targets)
+        on_stderr { load_all(root, targets) }
       rescue Autoproj::ConfigError, Autoproj::PackageNotFound, Autobuild::Exception, Autoproj::InputError => e
         raise autoproj_problem(e)
       rescue ArgumentError => e
@@ -86,6 +86,19 @@ module Relspec
                                                                                                   hint: "check `package_sets:` in autoproj/manifest, or run `autoproj update`")
       ensure
         reset_global_state
+      end
+
+      # autobuild's progress display writes to STDOUT (with terminal escape
+      # codes): relspec's stdout is its output (JSON, plans), so autoproj's
+      # messages go to stderr while it loads, without progress lines.
+      def on_stderr
+        previous = Autobuild.instance_variable_get(:@display)
+        display = Autobuild::ProgressDisplay.new($stderr)
+        display.progress_enabled = false
+        Autobuild.instance_variable_set(:@display, display)
+        yield
+      ensure
+        Autobuild.instance_variable_set(:@display, previous)
       end
 
       def autoproj_problem(error)

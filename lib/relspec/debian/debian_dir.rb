@@ -66,7 +66,7 @@ module Relspec
       Context = Struct.new(:source, :section, :maintainer, :build_depends, :depends, :homepage, :architecture,
                            :synopsis, :long_description, :codename, :release, :package_name, :vcs_url, :vcs_ref,
                            :commit, :date, :copyright_holder, :license, :build_type, :install_dir, :dh_options,
-                           :canonical, :dependency_dirs, :build_dirs, :cmake_options, :guard, :gem_file, :version,
+                           :canonical, :dependency_dirs, :build_dirs, :gem_dir, :cmake_options, :guard, :gem_file, :version,
                            :body, keyword_init: true)
 
       # Each template becomes a method of Context, compiled once: evaluating
@@ -94,12 +94,18 @@ module Relspec
           copyright_holder: package.maintainer || @in.fetch(:maintainer), license: package.license || "unknown",
           build_type: package.build_type, install_dir: install_dir, dh_options: DH_OPTIONS.fetch(package.build_type, ""),
           canonical: Naming.canonical(package.name), dependency_dirs: dependency_dirs,
-          build_dirs: @in.fetch(:closure, dependency_dirs), cmake_options: cmake_options,
+          build_dirs: @in.fetch(:closure, dependency_dirs), gem_dir: GEM_DIR, cmake_options: cmake_options,
           guard: "RELSPEC_ENV_#{source.gsub(/[^A-Za-z0-9]/, '_')}", gem_file: gem_file
         }
       end
 
       BUILD_DEPENDS_COMPAT = 11
+
+      # Where gems install below a package's prefix (GEM_PATH entry). Not
+      # lib/ruby/gems: Rock's FindGem.cmake takes every file whose path has
+      # "<gem name>…/lib/" as a library of the gem, and a prefix named
+      # …-ruby-<gem> followed by /lib/ made it link every sample .so of rice.
+      GEM_DIR = "gems"
 
       def compat
         @in.fetch(:debhelper_compat, 13)
@@ -207,9 +213,14 @@ module Relspec
 
       # Description paragraphs as debian/control wants them: one leading
       # space, "." for empty lines.
+      # manifest.xml indents its text like the XML around it: each line is
+      # taken without its indentation (a Debian description line starting
+      # with two spaces would be shown verbatim), runs of empty lines become
+      # one, and a first paragraph that only repeats the synopsis is left out.
       def long_description
         text = @in.fetch(:package).description || synopsis
-        lines = text.strip.lines.map(&:rstrip)
+        lines = text.strip.lines.map(&:strip).chunk_while { |a, b| a.empty? && b.empty? }.map(&:first)
+        lines = lines.drop(1).drop_while(&:empty?) if lines.first&.delete_suffix(".") == synopsis && lines.size > 1
         lines += ["", "Built from #{@in.fetch(:package).name} for release #{@in.fetch(:release)}."]
         lines.map { |line| line.empty? ? " ." : " #{line}" }.join("\n")
       end
@@ -235,7 +246,7 @@ module Relspec
           "prepend" => {
             "PATH" => ["#{dir}/bin"], "LD_LIBRARY_PATH" => ["#{dir}/lib"],
             "PKG_CONFIG_PATH" => ["#{dir}/lib/pkgconfig", "#{dir}/share/pkgconfig"], "CMAKE_PREFIX_PATH" => [dir],
-            "RUBYLIB" => ["#{dir}/lib"], "GEM_PATH" => ["#{dir}/lib/ruby/gems"]
+            "RUBYLIB" => ["#{dir}/lib"], "GEM_PATH" => ["#{dir}/#{GEM_DIR}"]
           }
         }
       end
