@@ -57,8 +57,8 @@ module Relspec
                        "(architectures: #{release.architectures.join(' ')})"
         end
 
-        path, kind = listed.first
-        PackageIndex.parse(decompress(index_bytes(codename, release, path), kind, "#{url}/dists/#{codename}/#{path}"))
+        path, kind, bytes = first_present(codename, release, listed)
+        PackageIndex.parse(decompress(bytes, kind, "#{url}/dists/#{codename}/#{path}"))
       rescue Deb822::ParseError, PackageIndex::Invalid => e
         raise Error, "#{url}/dists/#{codename}/#{path}: malformed index: #{e.message}"
       end
@@ -118,6 +118,22 @@ module Relspec
         raise Error, "#{url}/#{base}/Release: signature check failed: #{e.message}"
       end
 
+      # Mirrors often drop Packages.xz while their Release still lists it:
+      # the next form the Release lists is read instead (each is checked
+      # against its own checksum). Only when none is there is it an error.
+      def first_present(codename, release, listed)
+        missing = nil
+        listed.each do |path, kind|
+          return [path, kind, index_bytes(codename, release, path)]
+        rescue MissingIndex => e
+          missing ||= e
+        end
+        raise Error, missing.message
+      end
+
+      class MissingIndex < Error; end
+      private_constant :MissingIndex
+
       def index_bytes(codename, release, path)
         checksum = release.checksum(path)
         cached = @fetcher.remote? ? @cache.read(release.sha256, "#{codename}/#{path}") : nil
@@ -125,7 +141,7 @@ module Relspec
 
         where = "#{url}/dists/#{codename}/#{path}"
         bytes = @fetcher.fetch("dists/#{codename}/#{path}")
-        raise Error, "#{where} is listed in the Release file but missing" unless bytes
+        raise MissingIndex, "#{where} is listed in the Release file but missing" unless bytes
 
         verify(bytes, checksum, where)
         @cache.write(release.sha256, "#{codename}/#{path}", bytes) if @fetcher.remote?

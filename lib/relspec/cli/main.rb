@@ -110,7 +110,13 @@ module Relspec
       subcommand "osdeps", OsdepsCommands
 
       # `relspec osdeps SPEC` is `relspec osdeps render SPEC`.
+      # Options of every command that people also write before the command
+      # (`relspec --debug compile SPEC`); Thor only reads them after it.
+      GLOBAL_FLAGS = %w[--debug --no-debug --quiet --no-quiet].freeze
+
       def self.normalize(argv)
+        leading = argv.take_while { |arg| GLOBAL_FLAGS.include?(arg) }
+        argv = argv.drop(leading.size) + leading unless leading.empty? || argv.size == leading.size
         return argv unless argv[0] == "osdeps" && argv[1] && !argv[1].start_with?("-")
         return argv if OsdepsCommands.all_commands.key?(argv[1]) || argv[1] == "help"
 

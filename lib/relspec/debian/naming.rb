@@ -15,6 +15,12 @@ module Relspec
 
       # The name Debian gives the package of gem +gem+ (ruby-concurrent-ruby
       # for concurrent-ruby; Debian sometimes differs, see docs/compile.md).
+      # The gem's name in an osdeps gem entry, which may carry a version
+      # constraint ("rice<4.0.0").
+      def gem_name(entry)
+        entry[/\A[^<>=~!\s]+/]
+      end
+
       def distribution_gem(gem)
         "ruby-#{canonical(gem)}"
       end

@@ -24,8 +24,10 @@ module Relspec
         {
           package: package, deb_name: decision.deb_name, upstream: upstream, codename: target.codename,
           release: @effective.release, maintainer: @effective["maintainer"], install_dir: install_dir_of(decision),
-          dependencies: dependencies_of(package, decisions), apt: os.apt,
-          gems: (os.gems - @release_catalog.gems.keys).map { |gem| Debian::Naming.distribution_gem(gem) },
+          debhelper_compat: @effective.distributions.fetch(target.codename).debhelper_compat,
+          dependencies: dependencies_of(package, decisions), closure: closure_dirs(package, decisions), apt: os.apt,
+          gems: (os.gems.map { |gem| Debian::Naming.gem_name(gem) } - @release_catalog.gems.keys)
+            .map { |gem| Debian::Naming.distribution_gem(gem) },
           gem: @release_catalog.gems[package.name]
         }
       end
@@ -51,6 +53,29 @@ module Relspec
           decision = decisions[name]
           decision && { deb_name: decision.deb_name, version: decision.version.to_s, install_dir: install_dir_of(decision) }
         end
+      end
+
+      # The prefixes of the whole dependency closure, own and inherited,
+      # breadth first from the package (its direct dependencies by name, then
+      # theirs), each once: a dependency's CMake configuration or pkg-config
+      # file names its own dependencies, which the build must find too.
+      def closure_dirs(package, decisions)
+        catalog = @release_catalog.catalog
+        seen = {}
+        queue = package.build_dependencies.dup
+        dirs = []
+        until queue.empty?
+          name = queue.shift
+          next if seen[name]
+
+          seen[name] = true
+          decision = decisions[name]
+          next unless decision && (dir = install_dir_of(decision))
+
+          dirs << dir
+          queue.concat(catalog.package(name).build_dependencies) if catalog.package?(name)
+        end
+        dirs.uniq
       end
 
       def prefix_dir(install_prefix, release, separate, deb_name)

@@ -60,6 +60,7 @@ module Relspec
       def plan_target(target, blacklist)
         selection = @selections.fetch(target.codename)
         names = selection.names
+        names.each { |name| note_optional_missing(@catalog.package(name), target) }
         providers = names.to_h { |name| [name, providers_of(@catalog.package(name), target)] }
         causes = names.to_h { |name| [name, direct_cause(@catalog.package(name), target, providers[name], blacklist)] }.compact
         system = names.to_h { |name| [name, from_distribution(@catalog.package(name), target, causes[name])] }.compact
@@ -233,6 +234,15 @@ module Relspec
 
           @notes << "gem #{package.name} needs #{dependency}, which the #{target.codename} archive lacks as #{name} " \
                     "(add it to gems:)"
+        end
+      end
+
+      # autoproj leaves out an optional OS dependency the distribution
+      # cannot provide; the package is built without it, which plan says.
+      def note_optional_missing(package, target)
+        package.os_dependencies_for(target.codename).optional_missing.each do |name|
+          @notes << "#{package.name} is built without its optional dependency #{name} on #{target.codename}: " \
+                    "the osdeps define no package for it there"
         end
       end
 

@@ -72,6 +72,7 @@ module Relspec
         optional(:type).filled(:string, included_in?: %w[ubuntu debian])
         optional(:labels).filled(:array).each(:str?)
         optional(:archive).value(:hash)
+        optional(:debhelper_compat).filled(:integer, gteq?: 9, lteq?: 14)
       end
 
       # Where the distribution's packages can be read (to prefer its ruby-*

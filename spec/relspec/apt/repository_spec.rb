@@ -136,6 +136,18 @@ RSpec.describe Relspec::Apt::Repository do
       .to match(%r{repo/dists/bionic/main/binary-amd64/Packages.gz does not match the SHA256 of the Release file})
   end
 
+  it "reads the next index the Release file lists when the first is missing, as on mirrors that drop Packages.xz" do
+    path = build_repository
+    index = File.join(path, "dists", "bionic", "main", "binary-amd64")
+    # reprepro lists Packages.gz and Packages; the compressed one goes away
+    expect(File.read(File.join(path, "dists", "bionic", "Release"))).to include("main/binary-amd64/Packages.gz")
+    File.delete(File.join(index, "Packages.gz"))
+    expect(reader(path, trusted: true).packages("bionic", "amd64").entries.keys).to include("rock-x-base-types")
+    File.delete(File.join(index, "Packages"))
+    expect(error_of { reader(path, trusted: true).packages("bionic", "amd64") })
+      .to match(%r{binary-amd64/Packages.gz is listed in the Release file but missing})
+  end
+
   it "refuses a truncated .gz index" do
     path = build_repository
     gz = File.binread(File.join(path, "dists", "bionic", "main", "binary-amd64", "Packages.gz"))

@@ -135,10 +135,10 @@ RSpec.describe "relspec compile with gems" do
       system("dpkg-deb", "-x", deb, root, exception: true)
       system("dpkg-deb", "-x", Dir.glob(File.join(work, "#{portile}_2.4.0-1~buster_all.deb")).first, root, exception: true)
       prefix = File.join(root, "opt/rock/gemrel", nokogiri)
-      expect(File).to exist(File.join(prefix, "lib/ruby/gems/gems/nokogiri-1.10.10/lib/nokogiri.rb"))
-      expect(Dir.glob(File.join(prefix, "lib/ruby/gems/**/nokogiri_ext.so"))).not_to be_empty
+      expect(File).to exist(File.join(prefix, "gems/gems/nokogiri-1.10.10/lib/nokogiri.rb"))
+      expect(Dir.glob(File.join(prefix, "gems/**/nokogiri_ext.so"))).not_to be_empty
       # with both gems' env.sh applied, as a user of the release would run it
-      gem_path = [prefix, File.join(root, "opt/rock/gemrel", portile)].map { |dir| File.join(dir, "lib/ruby/gems") }
+      gem_path = [prefix, File.join(root, "opt/rock/gemrel", portile)].map { |dir| File.join(dir, "gems") }
       env = OUTSIDE_BUNDLE.merge("GEM_PATH" => gem_path.join(":"))
       output, status = Open3.capture2e(env, "ruby", "-e", 'require "nokogiri/nokogiri_ext"; print NokogiriExt.name')
       expect([output, status.success?]).to eq(["NokogiriExt", true])
