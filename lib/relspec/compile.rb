@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require_relative "plan"
+require_relative "availability"
 require_relative "debian/source_package"
 require_relative "debian/package_version"
 require_relative "osdeps/renderer"
@@ -14,20 +15,25 @@ module Relspec
   # each generated debian/, from which revisions follow) and the osdeps files.
   # Only what changed is written.
   class Compile
+    # +unchecked+: Availability::Report::TargetResults of the targets whose
+    # OS dependencies could not be checked (no source, nothing cached).
     Result = Struct.new(:release, :written, :unchanged, :published, :lock_path, :lock_changed, :osdeps_written,
-                        keyword_init: true)
+                        :unchecked, keyword_init: true)
 
     # +progress+ is called with (done, total) after each source package.
-    def self.run(path, out:, jobs: 2, timeout: 10, progress: nil)
-      new(path, out, jobs, timeout, progress).run
+    # +check+: run the availability check first (Availability.guard) and
+    # refuse a release whose OS dependencies are missing.
+    def self.run(path, out:, jobs: 2, timeout: 10, progress: nil, check: true)
+      new(path, out, jobs, timeout, progress, check).run
     end
 
-    def initialize(path, out, jobs, timeout, progress = nil)
+    def initialize(path, out, jobs, timeout, progress = nil, check = true)
       @path = path
       @out = out
       @jobs = [jobs.to_i, 1].max
       @timeout = timeout
       @progress = progress
+      @check = check
     end
 
     def run
@@ -35,6 +41,7 @@ module Relspec
       @effective = @planned.resolution.effective
       require_maintainer
       require_workspace
+      availability = @check ? Availability.guard(@planned, timeout: @timeout) : nil
       @catalog = @planned.release_catalog.catalog
       @previous = @planned.recorded
       @project_root = Plan.project_root(@path)
@@ -44,7 +51,8 @@ module Relspec
       write_build_plans(plan)
       lock_changed = Plan::Lock.write(@planned.lock_path, plan, @planned.spec_digest)
       Result.new(release: @effective.release, written: written, unchanged: unchanged, published: published,
-                 lock_path: @planned.lock_path, lock_changed: lock_changed, osdeps_written: write_osdeps(plan))
+                 lock_path: @planned.lock_path, lock_changed: lock_changed, osdeps_written: write_osdeps(plan),
+                 unchecked: availability ? availability.unchecked : [])
     end
 
     private
@@ -137,7 +145,7 @@ module Relspec
         package: package, deb_name: decision.deb_name, upstream: upstream, codename: target.codename,
         release: @effective.release, maintainer: @effective["maintainer"], install_dir: install_dir_of(decision),
         dependencies: dependencies_of(package, decisions), apt: os.apt,
-        gems: (os.gems - @planned.release_catalog.gems.keys).map { |gem| Debian::Naming.distribution_gem(gem) },
+        gems: Debian::ControlRelations.distribution_gems(os, @planned.release_catalog.gems.keys),
         gem: @planned.release_catalog.gems[package.name]
       }
     end

@@ -47,21 +47,36 @@ module Relspec
 
       # The Packages index of +codename+/+component+/+arch+.
       def packages(codename, arch, component: "main")
-        release = release(codename)
-        directory = "#{component}/binary-#{arch}"
-        listed = COMPRESSIONS.map { |file, kind| ["#{directory}/#{file}", kind] }.select { |path, _| release.checksum(path) }
-        if listed.empty?
-          raise Missing, "#{url}/dists/#{codename}/Release lists no #{directory}/Packages index " \
-                       "(architectures: #{release.architectures.join(' ')})"
-        end
-
-        path, kind = listed.first
-        PackageIndex.parse(decompress(index_bytes(codename, release, path), kind, "#{url}/dists/#{codename}/#{path}"))
+        PackageIndex.parse(packages_text(codename, arch, component: component))
       rescue Deb822::ParseError, ArgumentError => e
-        raise Error, "#{url}/dists/#{codename}/#{path}: malformed index: #{e.message}"
+        raise Error, "#{url}/dists/#{codename}/#{component}/binary-#{arch}/Packages: malformed index: #{e.message}"
+      end
+
+      # The same index as verified, uncompressed text (for readers that need
+      # other fields than PackageIndex keeps).
+      def packages_text(codename, arch, component: "main")
+        release = release(codename)
+        path, kind = listed_index(release, codename, arch, component)
+        decompress(index_bytes(codename, release, path), kind, "#{url}/dists/#{codename}/#{path}")
+      end
+
+      # What identifies the content of that index without reading it: the
+      # SHA256 the Release file gives for it (raises Missing like packages).
+      def index_digest(codename, arch, component: "main")
+        release = release(codename)
+        release.checksum(listed_index(release, codename, arch, component).first).sha256
       end
 
       private
+
+      def listed_index(release, codename, arch, component)
+        directory = "#{component}/binary-#{arch}"
+        listed = COMPRESSIONS.map { |file, kind| ["#{directory}/#{file}", kind] }.select { |path, _| release.checksum(path) }
+        return listed.first unless listed.empty?
+
+        raise Missing, "#{url}/dists/#{codename}/Release lists no #{directory}/Packages index " \
+                       "(architectures: #{release.architectures.join(' ')})"
+      end
 
       def read_release(codename)
         base = "dists/#{codename}"
