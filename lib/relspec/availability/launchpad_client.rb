@@ -109,8 +109,11 @@ module Relspec
         raise Failure, "Launchpad: #{uri} is not an http(s) URL" unless %w[http https].include?(uri.scheme)
 
         @count.synchronize { @requests += 1 }
-        Net::HTTP.start(uri.host, uri.port, use_ssl: uri.scheme == "https", open_timeout: @timeout,
-                                            read_timeout: @timeout, ssl_timeout: @timeout) do |http|
+        http = Net::HTTP.new(uri.host, uri.port)
+        http.use_ssl = uri.scheme == "https"
+        http.open_timeout = http.read_timeout = http.ssl_timeout = @timeout
+        http.max_retries = 0 # Net::HTTP would silently resend a timed-out GET; the retries are counted here
+        http.start do
           request = Net::HTTP::Get.new(uri)
           request["Accept"] = "application/json"
           answer(http.request(request), uri, where)

@@ -58,7 +58,7 @@ module Relspec
 
       # One line per target, then the table of what is missing.
       def text
-        lines = targets.map { |result| "#{result.target}: #{summary(result)}" }
+        lines = targets.map { |result| "#{result.target}: #{summary(result)}#{" (#{result.source})" if result.source}" }
         unless missing.empty?
           rows = [["target", "Debian name", "needed by", "hint"]] +
                  missing.map { |row| [row.target.to_s, row.name, row.needed_by.join(", "), row.hint ? "did you mean #{row.hint}?" : "-"] }
@@ -89,7 +89,7 @@ module Relspec
         when :unchecked then "not checked: #{result.reason}"
         when :problem then "could not be checked: #{result.reason}"
         else
-          text = "#{result.checked} relations checked (#{result.source})"
+          text = "#{result.checked} relations checked"
           text += ", #{result.missing} missing" if result.missing.positive?
           text += ", #{result.unknown} without an answer (#{result.reason})" if result.unknown.positive?
           text
