@@ -26,13 +26,15 @@ module Relspec
     # The check of a planned release (+planned+: Plan::Result). +mode+:
     # auto, apt or launchpad (Sources); +launchpad+: a LaunchpadClient, nil
     # to take Launchpad answers from the cache only; +only+: targets to check.
+    # +launchpad_base+: whose cached answers count when +launchpad+ is nil.
     def self.check(planned, mode: "auto", launchpad: nil, only: nil, timeout: 10,
-                   concurrency: LaunchpadSource::CONCURRENCY)
+                   concurrency: LaunchpadSource::CONCURRENCY, launchpad_base: nil)
+      launchpad_base = launchpad&.base || launchpad_base || LaunchpadClient::DEFAULT_BASE
       resolution = planned.resolution
       sources = Sources.new(resolution.effective.distributions, mode: mode, spec_dir: File.dirname(resolution.spec_file.path),
                                                                 launchpad: launchpad, fetcher_options: { timeout: timeout },
                                                                 apt_cache: Apt::Cache.new(Apt::Cache.default_dir),
-                                                                concurrency: concurrency)
+                                                                concurrency: concurrency, launchpad_base: launchpad_base)
       Check.run(resolution.effective.release, Requirements.of(planned, only: only), sources)
     end
 
@@ -40,8 +42,8 @@ module Relspec
     # indices cached by checksum), Launchpad only from its answer cache, never
     # asking the network. Returns the Report (its #unchecked targets deserve
     # a note); raises MissingDependencies when the release must not be built.
-    def self.guard(planned, timeout: 10)
-      report = check(planned, timeout: timeout)
+    def self.guard(planned, timeout: 10, launchpad_base: LaunchpadClient::DEFAULT_BASE)
+      report = check(planned, timeout: timeout, launchpad_base: launchpad_base)
       raise MissingDependencies, report if report.failed?
 
       report

@@ -21,8 +21,9 @@ module Relspec
                         :unchecked, keyword_init: true)
 
     # +progress+ is called with (done, total) after each source package.
-    # +check+: run the availability check first (Availability.guard) and
-    # refuse a release whose OS dependencies are missing.
+    # +check+: run the availability check first (Availability.guard, with
+    # these options when a Hash) and refuse a release whose OS dependencies
+    # are missing; false skips it.
     def self.run(path, out:, jobs: 2, timeout: 10, progress: nil, check: true)
       new(path, out, jobs, timeout, progress, check).run
     end
@@ -41,7 +42,7 @@ module Relspec
       @effective = @planned.resolution.effective
       require_maintainer
       require_workspace
-      availability = @check ? Availability.guard(@planned, timeout: @timeout) : nil
+      availability = @check ? Availability.guard(@planned, timeout: @timeout, **(@check.is_a?(Hash) ? @check : {})) : nil
       @catalog = @planned.release_catalog.catalog
       @previous = @planned.recorded
       @project_root = Plan.project_root(@path)

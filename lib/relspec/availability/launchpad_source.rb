@@ -46,8 +46,8 @@ module Relspec
       # A name Launchpad does publish there that looks like +name+ (one more
       # question, by substring); nil without a client or when none is close.
       def hint(target, name)
-        stem = name[/\A[a-z][a-z+.-]*?(?=-?\d|\z)/]
-        return nil unless @client && stem && stem.size >= Hint::PREFIX
+        stem = stem_of(name)
+        return nil unless @client && stem.size >= Hint::PREFIX
 
         entries = @client.published_binaries(stem, target.codename, target.arch, exact: false)
         Hint.new(entries.map { |entry| entry["binary_package_name"] }.compact.uniq - [name]).for(name)
@@ -56,6 +56,13 @@ module Relspec
       end
 
       private
+
+      # What similar names share: the part before the first digit (the
+      # version), else the name without its last part (-dev, -common).
+      def stem_of(name)
+        digit = name.index(/\d/)
+        (digit ? name[0...digit] : name.sub(/-[^-]+\z/, "")).chomp("-")
+      end
 
       def question(target, name)
         [VIRTUAL.fetch(name, name), target.codename, target.arch]

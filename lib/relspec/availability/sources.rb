@@ -20,7 +20,8 @@ module Relspec
       # +launchpad+: a LaunchpadClient, or nil to use cached answers only.
       def initialize(distributions, mode:, spec_dir:, launchpad:, fetcher_options: {}, apt_cache: Apt::Cache.new(nil),
                      names_cache: Apt::Cache.new(CacheDir.for("availability")),
-                     answer_cache: AnswerCache.new(AnswerCache.default_dir), concurrency: LaunchpadSource::CONCURRENCY)
+                     answer_cache: AnswerCache.new(AnswerCache.default_dir), concurrency: LaunchpadSource::CONCURRENCY,
+                     launchpad_base: launchpad&.base || LaunchpadClient::DEFAULT_BASE)
         raise ArgumentError, "unknown source #{mode.inspect} (#{MODES.join(', ')})" unless MODES.include?(mode)
 
         @distributions = distributions
@@ -29,7 +30,8 @@ module Relspec
         @fetcher_options = fetcher_options
         @apt_cache = apt_cache
         @names_cache = names_cache
-        @launchpad = LaunchpadSource.new(client: launchpad, cache: answer_cache, concurrency: concurrency)
+        @launchpad = LaunchpadSource.new(client: launchpad, cache: answer_cache, base: launchpad_base,
+                                         concurrency: concurrency)
         @archives = {}
       end
 

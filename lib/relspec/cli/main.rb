@@ -85,11 +85,12 @@ module Relspec
       option :jobs, type: :numeric, default: 2, desc: "Packages emitted in parallel"
       option :timeout, type: :numeric, default: 10, desc: "HTTP timeout in seconds"
       option :check, type: :boolean, default: true, desc: "Refuse a release with missing OS dependencies (--no-check: skip)"
+      option :launchpad_url, type: :string, default: "https://api.launchpad.net/1.0", desc: "Whose cached answers to use"
       def compile(path)
         require_relative "compile_command"
         finish CompileCommand.new(path: path, out: options[:out], jobs: options[:jobs], timeout: options[:timeout],
                                   out_io: $stdout, progress_io: options[:quiet] ? nil : $stderr,
-                                  check: options[:check]).call
+                                  check: options[:check] && { launchpad_base: options[:launchpad_url] }).call
       end
 
       desc "check SPEC", "Check that the OS dependencies of the release exist on every target"
