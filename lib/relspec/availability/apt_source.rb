@@ -48,19 +48,19 @@ module Relspec
       # {name => true/false} for the +names+ on +target+ (true also when a
       # package provides the name). Raises Unavailable or Apt::Repository::Error.
       def lookup(target, names)
-        index = names_of(target)
-        names.to_h { |name| [name, !index.lookup(name).nil?] }
+        indices = names_of(target)
+        names.to_h { |name| [name, indices.any? { |index| index.lookup(name) }] }
       end
 
       def hint(target, name)
-        (@hints ||= {})[target] ||= Hint.new(names_of(target).names)
+        (@hints ||= {})[target] ||= Hint.new(names_of(target).flat_map(&:names).uniq)
         @hints[target].for(name)
       end
 
       private
 
       def names_of(target)
-        @targets[target] ||= IndexNames.merge(SUITES.flat_map { |suffix| suite_names(target, suffix) })
+        @targets[target] ||= SUITES.flat_map { |suffix| suite_names(target, suffix) }
       end
 
       def suite_names(target, suffix)

@@ -4,14 +4,17 @@ require_relative "../apt/packages_scanner"
 
 module Relspec
   module Availability
-    # The binary package names that apt indices of one target make
-    # installable: real packages (Architecture: all ones included, as the
-    # binary-<arch> indices list them) and virtual names with the packages
-    # that provide them. Only names matter here, so only two fields are read.
+    # The binary package names one apt index makes installable: real
+    # packages (Architecture: all ones included, as the binary-<arch>
+    # indices list them) and virtual names with the packages that provide
+    # them. Only names matter here, so only two fields are read. Real names
+    # are kept sorted and searched by bisection: loading a cached index is
+    # then one split, not the building of a 60,000-entry Hash.
     class IndexNames
       FIELDS = %w[Package Provides].freeze
+      SEPARATOR = "--- provided ---"
 
-      # +real+: {name => true}; +virtual+: {name => [providers]}.
+      # +real+: sorted unique names; +virtual+: {name => [providers]}.
       def initialize(real, virtual)
         @real = real.freeze
         @virtual = virtual.freeze
@@ -20,58 +23,47 @@ module Relspec
 
       # From the text of a Packages index.
       def self.parse(text)
-        real = {}
+        real = []
         virtual = {}
         Apt::PackagesScanner.new(text).each(FIELDS) do |stanza|
           name = stanza["Package"]
           next unless name
 
-          real[name] = true
+          real << name
           stanza["Provides"]&.split(",")&.each do |relation|
             provided = relation.strip[/\A[^\s(:]+/]
             (virtual[provided] ||= []) << name if provided
           end
         end
-        new(real, virtual)
+        new(real.sort.uniq, virtual)
       end
 
-      # The cached form written by #dump: "name" or "virtual<TAB>providers".
+      # The cached form written by #dump: sorted names, a separator line,
+      # then "virtual<TAB>providers" lines.
       def self.load(text)
-        real = {}
-        virtual = {}
-        text.each_line(chomp: true) do |line|
+        real, provided = text.split("\n#{SEPARATOR}\n", 2)
+        virtual = provided.to_s.split("\n").to_h do |line|
           name, providers = line.split("\t", 2)
-          providers ? virtual[name] = providers.split(" ") : real[name] = true
+          [name, providers.to_s.split(" ")]
         end
-        new(real, virtual)
-      end
-
-      def self.merge(all)
-        return all.first if all.size == 1
-
-        virtual = {}
-        all.each { |names| names.virtual.each { |name, by| (virtual[name] ||= []).concat(by) } }
-        new(all.map(&:real).reduce({}, :merge), virtual.transform_values(&:uniq))
+        new(real.split("\n"), virtual)
       end
 
       def dump
-        (@real.keys.map { |name| "#{name}\n" } + @virtual.map { |name, by| "#{name}\t#{by.join(' ')}\n" }).join
+        "#{@real.join("\n")}\n#{SEPARATOR}\n#{@virtual.map { |name, by| "#{name}\t#{by.join(' ')}" }.join("\n")}\n"
       end
 
       # :real, [providers] or nil.
       def lookup(name)
-        return :real if @real.key?(name)
+        return :real if @real.bsearch { |candidate| name <=> candidate }
 
         @virtual[name]
       end
 
       # Every name a relation can be satisfied by (for hints).
       def names
-        @real.keys + @virtual.keys
+        @real + @virtual.keys
       end
-
-      # {name => true} and {name => [providers]}, for merging.
-      attr_reader :real, :virtual
 
       def inspect
         "#<#{self.class.name} #{@real.size} packages, #{@virtual.size} virtual names>"
