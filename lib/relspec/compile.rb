@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require_relative "plan"
+require_relative "availability"
 require_relative "debian/source_package"
 require_relative "debian/naming"
 require_relative "osdeps/renderer"
@@ -14,22 +15,28 @@ module Relspec
   # each generated debian/, from which revisions follow) and the osdeps files.
   # Only what changed is written.
   class Compile
+    # +unchecked+: Availability::Report::TargetResults of the targets whose
+    # OS dependencies could not be checked (no source, nothing cached).
     Result = Struct.new(:release, :written, :unchanged, :published, :lock_path, :lock_changed, :osdeps_written,
-                        keyword_init: true)
+                        :unchecked, keyword_init: true)
 
     # +progress+ is called with (done, total) after each source package.
     # +discard_lock+: go on without a lock that cannot be read.
-    def self.run(path, out:, jobs: 2, timeout: 10, progress: nil, discard_lock: false)
-      new(path, out, jobs, timeout, progress, discard_lock).run
+    # +check+: run the availability check first (Availability.guard, with
+    # these options when a Hash) and refuse a release whose OS dependencies
+    # are missing; false skips it.
+    def self.run(path, out:, jobs: 2, timeout: 10, progress: nil, discard_lock: false, check: true)
+      new(path, out, jobs, timeout, progress, discard_lock: discard_lock, check: check).run
     end
 
-    def initialize(path, out, jobs, timeout, progress = nil, discard_lock = false)
+    def initialize(path, out, jobs, timeout, progress = nil, discard_lock: false, check: true)
       @path = path
       @out = out
       @jobs = [jobs.to_i, 1].max
       @timeout = timeout
       @progress = progress
       @discard_lock = discard_lock
+      @check = check
     end
 
     def run
@@ -37,6 +44,7 @@ module Relspec
       @effective = @planned.resolution.effective
       require_maintainer
       require_workspace
+      availability = @check ? Availability.guard(@planned, timeout: @timeout, **(@check.is_a?(Hash) ? @check : {})) : nil
       @catalog = @planned.release_catalog.catalog
       plan = @planned.plan
       jobs, published = jobs_of(plan)
@@ -44,7 +52,8 @@ module Relspec
       write_build_plans(plan)
       lock_changed = @planned.write_lock
       Result.new(release: @effective.release, written: written, unchanged: unchanged, published: published,
-                 lock_path: @planned.lock_path, lock_changed: lock_changed, osdeps_written: write_osdeps(plan))
+                 lock_path: @planned.lock_path, lock_changed: lock_changed, osdeps_written: write_osdeps(plan),
+                 unchecked: availability ? availability.unchecked : [])
     end
 
     private

@@ -49,21 +49,45 @@ module Relspec
 
       # The Packages index of +codename+/+component+/+arch+.
       def packages(codename, arch, component: "main")
-        release = release(codename)
-        directory = "#{component}/binary-#{arch}"
-        listed = COMPRESSIONS.map { |file, kind| ["#{directory}/#{file}", kind] }.select { |path, _| release.checksum(path) }
-        if listed.empty?
-          raise Missing, "#{url}/dists/#{codename}/Release lists no #{directory}/Packages index " \
-                       "(architectures: #{release.architectures.join(' ')})"
-        end
-
-        path, kind, bytes = first_present(codename, release, listed)
-        PackageIndex.parse(decompress(bytes, kind, "#{url}/dists/#{codename}/#{path}"))
+        text, where = verified_index(codename, arch, component)
+        PackageIndex.parse(text)
       rescue Deb822::ParseError, PackageIndex::Invalid => e
-        raise Error, "#{url}/dists/#{codename}/#{path}: malformed index: #{e.message}"
+        raise Error, "#{where}: malformed index: #{e.message}"
+      end
+
+      # The same index as verified, uncompressed text (for readers that need
+      # other fields than PackageIndex keeps).
+      def packages_text(codename, arch, component: "main")
+        verified_index(codename, arch, component).first
+      end
+
+      # What identifies the content of that index without reading it: the
+      # SHA256 the Release file gives for it (raises Missing like packages).
+      def index_digest(codename, arch, component: "main")
+        release = release(codename)
+        release.checksum(listed_indices(release, codename, arch, component).first.first).sha256
       end
 
       private
+
+      # [text, where it was read]
+      def verified_index(codename, arch, component)
+        release = release(codename)
+        path, kind, bytes = first_present(codename, release, listed_indices(release, codename, arch, component))
+        where = "#{url}/dists/#{codename}/#{path}"
+        [decompress(bytes, kind, where), where]
+      end
+
+      # [[path, compression]] the Release file lists for that index, in the
+      # order they are tried.
+      def listed_indices(release, codename, arch, component)
+        directory = "#{component}/binary-#{arch}"
+        listed = COMPRESSIONS.map { |file, kind| ["#{directory}/#{file}", kind] }.select { |path, _| release.checksum(path) }
+        return listed unless listed.empty?
+
+        raise Missing, "#{url}/dists/#{codename}/Release lists no #{directory}/Packages index " \
+                       "(architectures: #{release.architectures.join(' ')})"
+      end
 
       def read_release(codename)
         base = "dists/#{codename}"

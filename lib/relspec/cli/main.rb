@@ -81,17 +81,46 @@ module Relspec
         .debian.tar.xz, .dsc) per build decision into
         <out>/<release>/<codename>-<arch>/<source>/, plan.yml per target (the builds
         in dependency order), releases/<release>/lock.yml and the osdeps files. A
-        compile with nothing changed writes nothing.
+        compile with nothing changed writes nothing. First, the OS dependencies are
+        checked as `relspec check` does (apt archives; Launchpad answers from its
+        cache only): a release with missing ones is refused unless --no-check.
       TEXT
       option :out, type: :string, default: "build", desc: "Where the source packages go"
       option :jobs, type: :numeric, default: 2, desc: "Packages emitted in parallel"
       option :timeout, type: :numeric, default: 10, desc: "HTTP timeout in seconds"
       option :discard_lock, type: :boolean, default: false, desc: DISCARD_LOCK
+      option :check, type: :boolean, default: true, desc: "Refuse a release with missing OS dependencies (--no-check: skip)"
+      option :launchpad_url, type: :string, default: "https://api.launchpad.net/1.0", desc: "Whose cached answers to use"
       def compile(path)
         require_relative "compile_command"
         finish CompileCommand.new(path: path, out: options[:out], jobs: options[:jobs], timeout: options[:timeout],
                                   out_io: $stdout, progress_io: options[:quiet] ? nil : $stderr,
-                                  discard_lock: options[:discard_lock]).call
+                                  discard_lock: options[:discard_lock],
+                                  check: options[:check] && { launchpad_base: options[:launchpad_url] }).call
+      end
+
+      desc "check SPEC", "Check that the OS dependencies of the release exist on every target"
+      long_desc <<~TEXT
+        Every Build-Depends and Depends relation relspec writes for the packages the
+        release builds must resolve on each target (by name, through Provides, or as an
+        Architecture: all package). Sources: the distribution's apt archive
+        (distributions.<codename>.archive; host: true for this machine's apt lists) or
+        Launchpad for Ubuntu targets (auto: the archive where one is configured).
+        Prints what is missing, with the packages that need it and a similar name that
+        exists. Exits 1 when something is missing or a source could not answer.
+        See docs/check.md.
+      TEXT
+      option :target, type: :string, desc: "Only this target (codename/arch)"
+      option :source, enum: %w[auto apt launchpad], default: "auto", desc: "Where availability is read"
+      option :format, enum: %w[text json markdown], default: "text", desc: "Output format"
+      option :timeout, type: :numeric, default: 10, desc: "HTTP timeout in seconds"
+      option :launchpad_url, type: :string, default: "https://api.launchpad.net/1.0", desc: "Launchpad web service root"
+      option :concurrency, type: :numeric, default: 4, desc: "Launchpad requests in flight at once"
+      def check(path)
+        require_relative "check_command"
+        finish CheckCommand.new(path: path, format: options[:format], target: options[:target], source: options[:source],
+                                timeout: options[:timeout], launchpad_url: options[:launchpad_url],
+                                concurrency: options[:concurrency], out: $stdout).call
       end
 
       desc "why SPEC PACKAGE", "Explain one package's decision, with its full cause chain"

@@ -34,15 +34,7 @@ module Relspec
       private
 
       def selected_targets(plan)
-        return plan.targets.keys unless @target
-
-        wanted = Plan::Target.parse(@target)
-        found = plan.targets.keys.find { |target| target == wanted }
-        raise Error, "#{@target} is not a target of #{plan.release} (#{plan.targets.keys.join(', ')})" unless found
-
-        [found]
-      rescue ArgumentError => e
-        raise Error, e.message
+        Plan::Target.select(@target, plan.targets.keys, plan.release)
       end
 
       def render(report)

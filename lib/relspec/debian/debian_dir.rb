@@ -3,6 +3,7 @@
 require "erb"
 require "digest"
 require_relative "naming"
+require_relative "control_relations"
 require_relative "../yaml/writer"
 
 module Relspec
@@ -22,8 +23,6 @@ module Relspec
       ARCH_INDEPENDENT = %w[ruby import archive meta].freeze
       DH_OPTIONS = { "cmake" => " --buildsystem=cmake", "orogen" => " --buildsystem=cmake",
                      "autotools" => " --buildsystem=autoconf" }.freeze
-      BUILD_TOOLS = { "cmake" => ["cmake"], "orogen" => ["cmake"], "autotools" => %w[autoconf automake libtool],
-                      "ruby" => %w[ruby git], "gem" => ["ruby"], "import" => [], "archive" => [], "meta" => [] }.freeze
 
       # Stands for the version in the debian/ whose digest decides the
       # revision (the digest must not depend on what it decides).
@@ -166,33 +165,25 @@ module Relspec
         ARCH_INDEPENDENT.include?(@in.fetch(:package).build_type) ? "all" : "any"
       end
 
-      # build-essential is implied for every build (and Policy forbids listing it).
-      IMPLIED = %w[build-essential].freeze
+      def own_relations
+        @in.fetch(:dependencies).map { |dep| "#{dep[:deb_name]} (>= #{dep[:version]})" }
+      end
 
-      def relations
-        own = @in.fetch(:dependencies).map { |dep| "#{dep[:deb_name]} (>= #{dep[:version]})" }
-        own + (@in.fetch(:apt) - IMPLIED) + @in.fetch(:gems)
+      # The OS part: apt names and distribution gems (already ruby-<gem>).
+      def os_relations
+        ControlRelations.os_relations(@in.fetch(:apt), @in.fetch(:gems))
       end
 
       def build_depends
-        return [debhelper] if meta?
-
-        tools = BUILD_TOOLS.fetch(@in.fetch(:package).build_type, [])
-        ([debhelper] + tools + relations).uniq
+        ControlRelations.build_depends(@in.fetch(:package).build_type, own_relations, os_relations, debhelper: debhelper)
       end
 
       def meta?
         @in.fetch(:package).build_type == "meta"
       end
 
-      # Build tools autoproj adds as OS dependencies of every cmake or
-      # autotools package; a built package does not need them to run.
-      BUILD_ONLY = %w[cmake autoconf automake libtool pkg-config ruby-dev].freeze
-
       def depends
-        base = architecture == "any" ? ["${shlibs:Depends}", "${misc:Depends}"] : ["${misc:Depends}"]
-        base += ["ruby"] if %w[ruby gem].include?(@in.fetch(:package).build_type)
-        (base + (relations - BUILD_ONLY)).uniq
+        ControlRelations.depends(@in.fetch(:package).build_type, architecture, own_relations, os_relations)
       end
 
       def homepage

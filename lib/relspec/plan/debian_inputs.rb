@@ -1,6 +1,6 @@
 # frozen_string_literal: true
 
-require_relative "../debian/naming"
+require_relative "../debian/control_relations"
 
 module Relspec
   module Plan
@@ -26,8 +26,7 @@ module Relspec
           release: @effective.release, maintainer: @effective["maintainer"], install_dir: install_dir_of(decision),
           debhelper_compat: @effective.distributions.fetch(target.codename).debhelper_compat,
           dependencies: dependencies_of(package, decisions), closure: closure_dirs(package, decisions), apt: os.apt,
-          gems: (os.gems.map { |gem| Debian::Naming.gem_name(gem) } - @release_catalog.gems.keys)
-            .map { |gem| Debian::Naming.distribution_gem(gem) },
+          gems: Debian::ControlRelations.distribution_gems(os, @release_catalog.gems.keys),
           gem: @release_catalog.gems[package.name]
         }
       end

@@ -77,9 +77,11 @@ module Relspec
 
       # Where the distribution's packages can be read (to prefer its ruby-*
       # packages over packaging gems): a repository plus its components.
+      # host: true reads this machine's apt lists instead (Apt::HostLists).
       ARCHIVE = Dry::Schema.JSON(parent: REPOSITORY) do
         config.validate_keys = true
         optional(:components).filled(:array).each(:str?)
+        optional(:host).value(:bool)
       end
 
       def self.keys(schema)

@@ -33,7 +33,8 @@ RSpec.describe "relspec compile with gems" do
       distributions:
         bionic: { archive: { path: ../repos/ubuntu, trusted: true } }
     YAML
-    @compile = relspec("compile", "specs/gemrel.yml", "--out", "out", chdir: @dir)
+    # the stand-in bionic archive holds only ruby-* packages: no availability check
+    @compile = relspec("compile", "specs/gemrel.yml", "--out", "out", "--no-check", chdir: @dir)
   end
 
   after(:all) do
@@ -171,7 +172,7 @@ RSpec.describe "relspec compile with gems" do
     expect(run.stderr).to include("missing from the repository: buster/amd64 mini_portile2")
     expect(run.stderr).not_to include("bionic/amd64 mini_portile2")
   ensure
-    relspec("compile", "specs/gemrel.yml", "--out", "out", chdir: @dir) # the full osdeps files again
+    relspec("compile", "specs/gemrel.yml", "--out", "out", "--no-check", chdir: @dir) # the full osdeps files again
   end
 
   it "refuses a .gem that differs from the one the lock recorded for that version" do
@@ -194,7 +195,7 @@ RSpec.describe "relspec compile with gems" do
   end
 
   it "writes nothing on a second compile" do
-    again = relspec("compile", "specs/gemrel.yml", "--out", "out", chdir: @dir)
+    again = relspec("compile", "specs/gemrel.yml", "--out", "out", "--no-check", chdir: @dir)
     expect(again.exit_code).to eq(0), again.stderr
     expect(again.stdout).to eq("gemrel: nothing changed (11 source packages up to date)\n")
   end
