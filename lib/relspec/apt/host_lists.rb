@@ -26,7 +26,7 @@ module Relspec
 
       def packages(codename, arch, component: "main")
         PackageIndex.parse(packages_text(codename, arch, component: component))
-      rescue Deb822::ParseError, ArgumentError => e
+      rescue Deb822::ParseError, ArgumentError, PackageIndex::Invalid => e
         raise Repository::Error, "#{url} (#{codename}/#{component}/binary-#{arch}): malformed index: #{e.message}"
       end
 
