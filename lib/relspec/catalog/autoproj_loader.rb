@@ -8,6 +8,7 @@
 # current workspace): it is reset before and after every load. It also has
 # to be patched not to write into the workspace (ReadOnlyConfiguration).
 require "autoproj"
+require_relative "copyright_holders"
 
 module Relspec
   class Catalog
@@ -254,6 +255,8 @@ module Relspec
           "version" => description.version, "summary" => description.brief_description,
           "description" => description.description&.strip, "license" => description.license,
           "maintainer" => maintainers.empty? ? nil : maintainers.join(", "),
+          "copyright" => CopyrightHolders.of(description.path, description.each_author.to_a,
+                                             description.each_maintainer.to_a).then { |holders| holders.empty? ? nil : holders },
           "manifest" => relative(ws, description.path)
         }.compact
       end

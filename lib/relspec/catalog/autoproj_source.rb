@@ -99,7 +99,7 @@ module Relspec
             name: name, package_set: entry["package_set"], build_type: entry["build_type"], vcs: vcs, commit_time: time,
             source_dir: entry["source_dir"], checked_out: entry["checked_out"], version: entry["version"],
             summary: entry["summary"], description: entry["description"], license: entry["license"],
-            maintainer: entry["maintainer"], dependencies: entry["dependencies"],
+            maintainer: entry["maintainer"], copyright: entry["copyright"], dependencies: entry["dependencies"],
             optional_dependencies: entry["optional_dependencies"], defines: entry["defines"],
             os_dependencies: entry["os_dependencies"].transform_values { |deps| OsDependencies.from_h(deps) }
           )

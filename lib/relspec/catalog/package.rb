@@ -14,12 +14,12 @@ module Relspec
       BUILD_TYPES = %w[cmake orogen autotools ruby python import archive meta gem].freeze
 
       FIELDS = %i[name package_set build_type vcs commit_time version summary description license maintainer
-                  source_dir checked_out dependencies optional_dependencies os_dependencies defines].freeze
+                  copyright source_dir checked_out dependencies optional_dependencies os_dependencies defines].freeze
 
       attr_reader(*FIELDS)
 
       def initialize(name:, package_set:, build_type:, vcs:, commit_time:, source_dir:, checked_out: true, version: nil,
-                     summary: nil, description: nil, license: nil, maintainer: nil, dependencies: [],
+                     summary: nil, description: nil, license: nil, maintainer: nil, copyright: [], dependencies: [],
                      optional_dependencies: [], os_dependencies: {}, defines: {})
         @name = name
         @package_set = package_set
@@ -31,6 +31,8 @@ module Relspec
         @description = description
         @license = license
         @maintainer = maintainer
+        # the upstream copyright holders (manifest.xml), "Name <email>"
+        @copyright = (copyright || []).dup.freeze
         @source_dir = source_dir
         @checked_out = checked_out
         @dependencies = dependencies.uniq.sort.freeze
@@ -68,7 +70,7 @@ module Relspec
         {
           "package_set" => package_set, "build_type" => build_type, "vcs" => vcs.to_h,
           "commit_time" => commit_time, "version" => version, "summary" => summary, "description" => description,
-          "license" => license, "maintainer" => maintainer, "source_dir" => source_dir,
+          "license" => license, "maintainer" => maintainer, "copyright" => copyright, "source_dir" => source_dir,
           "checked_out" => checked_out ? nil : false,
           "dependencies" => dependencies, "optional_dependencies" => optional_dependencies,
           "os_dependencies" => os_dependencies.transform_values(&:to_h), "defines" => defines
@@ -80,6 +82,7 @@ module Relspec
           name: name, package_set: hash["package_set"], build_type: hash["build_type"],
           vcs: Vcs.from_h(hash.fetch("vcs", {})), commit_time: hash["commit_time"], version: hash["version"],
           summary: hash["summary"], description: hash["description"], checked_out: hash.fetch("checked_out", true), license: hash["license"], maintainer: hash["maintainer"],
+          copyright: hash.fetch("copyright", []),
           source_dir: hash["source_dir"], dependencies: hash.fetch("dependencies", []),
           optional_dependencies: hash.fetch("optional_dependencies", []),
           os_dependencies: hash.fetch("os_dependencies", {}).transform_values { |deps| OsDependencies.from_h(deps) },

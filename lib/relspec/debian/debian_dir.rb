@@ -4,6 +4,7 @@ require "erb"
 require "digest"
 require_relative "naming"
 require_relative "control_relations"
+require_relative "license_name"
 require_relative "../yaml/writer"
 
 module Relspec
@@ -47,8 +48,7 @@ module Relspec
           "source/format" => "3.0 (quilt)\n",
           "env.sh" => template("env.sh.erb"),
           "env.yml" => Yaml::Writer.dump(environment),
-          "#{source}.lintian-overrides" => "# packages of a release live in /opt by design\n" \
-                                           "#{source}: dir-or-file-in-opt [#{install_dir.delete_prefix('/')}/*]\n"
+          "#{source}.lintian-overrides" => lintian_overrides
         }
         # debhelper-compat in Build-Depends needs debhelper 11.1.4; older ones read debian/compat
         files["compat"] = "#{compat}\n" if compat < BUILD_DEPENDS_COMPAT
@@ -67,7 +67,7 @@ module Relspec
       # (changelog) and +body+ (rules).
       Context = Struct.new(:source, :section, :maintainer, :build_depends, :depends, :homepage, :architecture,
                            :synopsis, :long_description, :codename, :release, :package_name, :vcs_url, :vcs_ref,
-                           :commit, :date, :copyright_holder, :license, :build_type, :install_dir, :dh_options,
+                           :commit, :date, :copyright_holders, :license, :license_name, :common_license, :public_source, :build_type, :install_dir, :dh_options,
                            :canonical, :dependency_dirs, :build_dirs, :gem_dir, :cmake_options, :guard, :gem_file, :version,
                            :body, keyword_init: true)
 
@@ -91,10 +91,12 @@ module Relspec
           source: source, section: SECTIONS.fetch(package.build_type, "devel"), maintainer: @in.fetch(:maintainer),
           build_depends: build_depends, depends: depends, homepage: homepage, architecture: architecture,
           synopsis: synopsis, long_description: long_description, codename: @in.fetch(:codename),
-          release: @in.fetch(:release), package_name: package.name, vcs_url: package.vcs.url.to_s,
+          release: @in.fetch(:release), package_name: package.name, vcs_url: shown_url(package.vcs.url.to_s),
           vcs_ref: vcs_ref(package.vcs), commit: package.vcs.commit.to_s, date: changelog_date,
-          copyright_holder: package.maintainer || @in.fetch(:maintainer), license: package.license || "unknown",
-          build_type: package.build_type, install_dir: install_dir, dh_options: DH_OPTIONS.fetch(package.build_type, ""),
+          copyright_holders: copyright_holders, license: license_text, license_name: LicenseName.of(license_text),
+          common_license: LicenseName.common_license_file(LicenseName.of(license_text)),
+          public_source: public_url(package.vcs.url.to_s),
+          build_type: package.build_type, install_dir: install_dir, dh_options: dh_options(package.build_type),
           canonical: Naming.canonical(package.name), dependency_dirs: dependency_dirs,
           build_dirs: @in.fetch(:closure, dependency_dirs), gem_dir: GEM_DIR, cmake_options: cmake_options,
           guard: "RELSPEC_ENV_#{source.gsub(/[^A-Za-z0-9]/, '_')}", gem_file: gem_file
@@ -175,7 +177,24 @@ module Relspec
       end
 
       def build_depends
-        ControlRelations.build_depends(@in.fetch(:package).build_type, own_relations, os_relations, debhelper: debhelper)
+        ControlRelations.build_depends(@in.fetch(:package).build_type, own_relations, os_relations + autoreconf,
+                                       debhelper: debhelper)
+      end
+
+      # debhelper runs dh_autoreconf by itself from compat 10 on; before
+      # (xenial's 9) it is an add-on of its own package.
+      AUTORECONF_BY_DEFAULT = 10
+
+      def old_autotools?
+        @in.fetch(:package).build_type == "autotools" && compat < AUTORECONF_BY_DEFAULT
+      end
+
+      def autoreconf
+        old_autotools? ? ["dh-autoreconf"] : []
+      end
+
+      def dh_options(build_type)
+        DH_OPTIONS.fetch(build_type, "") + (old_autotools? ? " --with autoreconf" : "")
       end
 
       def meta?
@@ -213,6 +232,51 @@ module Relspec
         lines = lines.drop(1).drop_while(&:empty?) if lines.first&.delete_suffix(".") == synopsis && lines.size > 1
         lines += ["", "Built from #{@in.fetch(:package).name} for release #{@in.fetch(:release)}."]
         lines.map { |line| line.empty? ? " ." : " #{line}" }.join("\n")
+      end
+
+      # The upstream holders (manifest.xml's <copyright>, authors or
+      # maintainers; a gem's authors), never the release's maintainer.
+      def copyright_holders
+        package = @in.fetch(:package)
+        holders = package.copyright.empty? ? package.maintainer.to_s.split(", ") : package.copyright
+        holders.empty? ? ["the authors of #{package.name}"] : holders
+      end
+
+      def license_text
+        text = @in.fetch(:package).license.to_s.strip.gsub(/\s+/, " ")
+        text.empty? ? "unknown" : text
+      end
+
+      # A repository inside the workspace ($AUTOPROJ_ROOT/…, a folder of
+      # the maintainer's machine) is no public source: it is named relative
+      # to the workspace, and debian/copyright leaves Source: out.
+      WORKSPACE_URL = %r{\A\$AUTOPROJ_ROOT/}
+
+      def shown_url(url)
+        url.match?(WORKSPACE_URL) ? "#{url.sub(WORKSPACE_URL, '')} (a repository of the autoproj workspace)" : url
+      end
+
+      def public_url(url)
+        url.match?(%r{\A(https?|git|ssh)://|\A[\w.-]+@[\w.-]+:}) ? url : nil
+      end
+
+      # Packages of a release live under /opt by design (DESIGN §5): lintian
+      # names /opt/rock/, /opt/rock/<release>/ and every path of the prefix.
+      # Their libraries are not on ld.so's path, so Rock's CMake gives
+      # programs a RUNPATH to the release's prefixes (the only way they run
+      # without env.sh): custom-library-search-path is that, by design.
+      def lintian_overrides
+        parents = install_dir.delete_prefix("/").split("/").each_index.map do |index|
+          install_dir.delete_prefix("/").split("/")[0..index].join("/")
+        end
+        lines = ["# packages of a release live in /opt by design"]
+        lines += parents[1..-2].to_a.map { |dir| "#{source}: dir-or-file-in-opt [#{dir}/]" }
+        lines << "#{source}: dir-or-file-in-opt [#{parents.last}/*]"
+        if architecture == "any"
+          lines += ["# libraries of the release are found through RUNPATH into its prefixes under /opt",
+                    "#{source}: custom-library-search-path"]
+        end
+        "#{lines.join("\n")}\n"
       end
 
       def vcs_ref(vcs)

@@ -69,8 +69,10 @@ RSpec.describe "a release of real Rock packages" do
 
   it "builds base/types against its whole dependency closure and with the package set's defines" do
     rules = debian_file("rock-rock-base-types", "rules")
-    # base/cmake is not a direct dependency's prefix only: base/logging's CMake needs it too
-    expect(rules).to include("export CMAKE_PREFIX_PATH := #{prefix('rock-rock-base-cmake')}:#{prefix('rock-rock-base-logging')}\n")
+    # base/cmake is not a direct dependency's prefix only: base/logging's CMake needs it too; rice is
+    # there because base/types' Ruby bindings (an optional dependency the release can provide) need it
+    expect(rules).to include("export CMAKE_PREFIX_PATH := #{prefix('rock-rock-base-cmake')}:" \
+                             "#{prefix('rock-rock-base-logging')}:#{prefix('rock-rock-ruby-rice')}\n")
     expect(rules).to include("export PKG_CONFIG_PATH := #{prefix('rock-rock-base-cmake')}/lib/pkgconfig:")
     expect(rules).to include("-DCMAKE_BUILD_TYPE=Release -DROCK_TEST_ENABLED=OFF -DUSE_SISL=OFF " \
                              "-DCMAKE_INSTALL_PREFIX=$(PREFIX)")
@@ -83,26 +85,54 @@ RSpec.describe "a release of real Rock packages" do
       int main() { std::cout << base::Angle::fromDeg(90).getDeg() << std::endl; return 0; }
     CPP
     File.write(File.join(@dir, "angle.cpp"), program)
-    output, status = @host.shell(<<~SH)
+    output, status = @host.shell(<<~SH, chdir: @dir)
       set -eu
       . #{prefix('rock-rock-base-types')}/env.sh
       g++ -std=c++11 -o angle angle.cpp $(pkg-config --cflags --libs base-types)
       ./angle
     SH
+    # (the program is in the test's folder, not the builder's)
     expect(status).to be_success, output
     expect(output.lines.last).to eq("90\n")
   end
 
+  # This machine has utilrb 3.2.0 and facets 4.0.0 installed as gems (autoproj's own dependencies),
+  # both newer than the release's: the release's code must still be what Ruby loads.
   it "lets Ruby load utilrb and facets through env.sh only, with an empty GEM_HOME" do
     output, status = @host.shell(<<~SH)
       set -eu
       . #{prefix('rock-rock-ruby-utilrb')}/env.sh
       export GEM_HOME=$(mktemp -d)
-      ruby -e 'require "utilrb/logger"; require "backports/2.5.0/hash/slice"; puts Utilrb::Logger::Hierarchy.name; puts Gem.loaded_specs.keys.sort.join(",")'
+      ruby -e 'require "utilrb/logger"; require "backports/2.5.0/hash/slice"; puts Utilrb::Logger::Hierarchy.name
+               puts $LOADED_FEATURES.grep(%r{/(utilrb/logger|facets/kernel/constant)[.]rb\z}).sort'
     SH
     expect(status).to be_success, output
-    expect(output.lines.first).to eq("Utilrb::Logger::Hierarchy\n")
-    expect(output).to include("facets")
+    expect(output.lines.map(&:chomp)).to eq(["Utilrb::Logger::Hierarchy",
+                                             "#{prefix('rock-rock-ruby-facets')}/lib/facets/kernel/constant.rb",
+                                             "#{prefix('rock-rock-ruby-utilrb')}/lib/utilrb/logger.rb"])
+  end
+
+  it "names the upstream copyright holders and the license by its DEP-5 short name" do
+    copyright = debian_file("rock-rock-base-cmake", "copyright")
+    expect(copyright).to include("Copyright: DFKI <robotik@dfki.de>\n Sylvain Joyeux <sylvain.joyeux@m4x.org>\n")
+    expect(copyright).to include("License: LGPL-2+\n base/cmake declares its license as: LGPL v2 or later\n")
+    expect(copyright).not_to include("rock-dev@example.org")
+    expect(debian_file("rock-rock-ruby-utilrb", "copyright")).to include("License: CeCILL-B\n")
+    %w[rock-rock-base-cmake rock-rock-base-types rock-rock-ruby-utilrb].each do |source|
+      expect(debian_file(source, "changelog") + debian_file(source, "copyright")).not_to include("$AUTOPROJ_ROOT")
+    end
+  end
+
+  # lintian errors of upstream's own files that relspec does not rewrite (none known yet).
+  UPSTREAM_LINTIAN_ERRORS = [].freeze
+
+  it "passes lintian on every source and binary package with no errors" do
+    files = Dir.glob(File.join(@target, "*", "*.dsc")).sort + @debs.values.flatten
+    output, = Open3.capture2e("lintian", "--no-tag-display-limit", *files)
+    errors = output.lines.grep(/\AE: /).reject { |line| UPSTREAM_LINTIAN_ERRORS.any? { |known| line.include?(known) } }
+    expect(errors).to eq([]), output
+    # the overrides cover /opt/rock, /opt/rock/<release> and the prefixes
+    expect(output).not_to include("dir-or-file-in-opt")
   end
 
   it "sources shared dependencies once, keeps the system gem path, and works under set -u" do
@@ -115,8 +145,10 @@ RSpec.describe "a release of real Rock packages" do
     SH
     expect(status).to be_success, output
     cmake_path, gem_default = output.lines.map(&:chomp)
-    expect(cmake_path.split(":")).to eq([prefix("rock-rock-base-types"), prefix("rock-rock-base-logging"),
-                                         prefix("rock-rock-base-cmake")])
+    # base/types' dependencies are sourced in order (base/cmake, base/logging, rice), each prepending
+    # itself; base/logging's own base/cmake is not added again
+    expect(cmake_path.split(":")).to eq([prefix("rock-rock-base-types"), prefix("rock-rock-ruby-rice"),
+                                         prefix("rock-rock-base-logging"), prefix("rock-rock-base-cmake")])
     expect(gem_default).to eq("true")
   end
 end
