@@ -8,6 +8,7 @@
 # current workspace): it is reset before and after every load. It also has
 # to be patched not to write into the workspace (ReadOnlyConfiguration).
 require "autoproj"
+require "tmpdir"
 require_relative "copyright_holders"
 
 module Relspec
@@ -74,9 +75,20 @@ module Relspec
 
       # Loads +root+ once per target into plain data. Every problem of the
       # workspace, autoproj's included, is raised as a WorkspaceProblem.
-      def load(root, targets)
+      # +manifests+: package name => manifest.xml text read instead of the
+      # checkout's (a pinned commit's, see PinnedManifests).
+      def load(root, targets, manifests: {})
         install_patches
-        on_stderr { load_all(root, targets) }
+        on_stderr do
+          Dir.mktmpdir("relspec-manifests") do |dir|
+            files = manifests.to_h do |name, text|
+              path = File.join(dir, "#{name.tr('/', '_')}.xml")
+              File.write(path, text)
+              [name, path]
+            end
+            load_all(root, targets, files)
+          end
+        end
       rescue Autoproj::ConfigError, Autoproj::PackageNotFound, Autobuild::Exception, Autoproj::InputError => e
         raise autoproj_problem(e)
       rescue ArgumentError => e
@@ -125,8 +137,8 @@ module Relspec
       end
 
       # +targets+: codename => [[type names], [labels]]
-      def load_all(root, targets)
-        per_target = targets.to_h { |codename, os| [codename, load_one(root, os)] }
+      def load_all(root, targets, manifests)
+        per_target = targets.to_h { |codename, os| [codename, load_one(root, os, manifests)] }
         first = per_target.values.first
         packages = first[:packages].to_h do |name, package|
           os = per_target.to_h { |codename, loaded| [codename, loaded[:os_dependencies].fetch(name)] }
@@ -135,7 +147,7 @@ module Relspec
         first[:workspace].merge("packages" => packages)
       end
 
-      def load_one(root, operating_system)
+      def load_one(root, operating_system, manifests)
         reset_global_state
         resolver = Autoproj::OSPackageResolver.new(operating_system: operating_system)
         managers = Autoproj::OSPackageInstaller::PACKAGE_MANAGERS.keys.to_h { |name| [name, InertPackageManager] }
@@ -149,12 +161,24 @@ module Relspec
         ws.setup_all_package_directories
         ws.finalize_package_setup
         ws.manifest.each_package_definition do |definition|
-          ws.manifest.load_package_manifest(definition.name) if definition.checked_out?
+          if manifests[definition.name]
+            load_manifest_file(ws, definition, manifests[definition.name])
+          elsif definition.checked_out?
+            ws.manifest.load_package_manifest(definition.name)
+          end
         end
         ws.finalize_setup(read_only: true)
-        extract(ws)
+        extract(ws, manifests)
       ensure
         ws&.clear_main_workspace
+      end
+
+      # What Manifest#load_package_manifest does, from another file: the
+      # package's description and the dependencies it declares.
+      def load_manifest_file(ws, definition, path)
+        definition.autobuild.description =
+          Autoproj::PackageManifest.load(definition.autobuild, path, ros_manifest: false, condition_context: ws.config)
+        definition.apply_dependencies_from_manifest
       end
 
       def reset_global_state
@@ -166,7 +190,7 @@ module Relspec
         Autobuild::CMake.defines.clear
       end
 
-      def extract(ws)
+      def extract(ws, manifests)
         manifest = ws.manifest
         packages = {}
         os_dependencies = {}
@@ -174,6 +198,8 @@ module Relspec
         resolved = Hash.new { |cache, name| cache[name] = classify(ws.os_package_resolver, name) }
         manifest.each_package_definition do |definition|
           packages[definition.name] = package_data(ws, definition)
+          # a pinned commit's manifest is named as the checkout's file, not the temporary copy
+          packages[definition.name]["manifest"] = relative(ws, File.join(definition.autobuild.srcdir, "manifest.xml")) if manifests[definition.name]
           os_dependencies[definition.name] = os_dependencies_of(definition.autobuild, resolved)
         end
         { packages: packages, os_dependencies: os_dependencies, workspace: workspace_data(manifest) }

@@ -19,13 +19,16 @@ module Relspec
     class AutoprojSource
       # +distributions+: codename => Spec::Distribution, the targets to resolve
       # OS dependencies for.
-      def self.load(root, distributions)
-        new(root, distributions).load
+      # +manifests+: name => manifest.xml text autoproj reads instead of the
+      # checkout's (PinnedManifests).
+      def self.load(root, distributions, manifests: {})
+        new(root, distributions, manifests).load
       end
 
-      def initialize(root, distributions)
+      def initialize(root, distributions, manifests = {})
         @root = root
         @distributions = distributions
+        @manifests = manifests
       end
 
       def load
@@ -67,7 +70,7 @@ module Relspec
         require_relative "autoproj_loader"
         saved = $stdout
         $stdout = $stderr
-        AutoprojLoader.load(File.expand_path(@root), operating_systems)
+        AutoprojLoader.load(File.expand_path(@root), operating_systems, manifests: @manifests)
       rescue AutoprojLoader::WorkspaceProblem => e
         report_problem(e)
       ensure

@@ -32,10 +32,12 @@ module Relspec
       # The catalog of +root+ for +distributions+, from the cache when its
       # fingerprint still holds, else from the block (which loads it), then
       # stored.
-      def fetch(root, distributions)
+      # +manifests+: the pinned manifests the catalog is loaded with (part
+      # of the entry's key).
+      def fetch(root, distributions, manifests = {})
         return yield unless @dir
 
-        path = entry_path(root, distributions)
+        path = entry_path(root, distributions, manifests)
         cached = read(path)
         return cached[:catalog] if cached && cached[:fingerprint] == fingerprint(root, cached[:catalog])
 
@@ -46,8 +48,9 @@ module Relspec
 
       private
 
-      def entry_path(root, distributions)
-        key = [File.expand_path(root), distributions.map { |codename, d| [codename, d.type, d.labels] }.sort].inspect
+      def entry_path(root, distributions, manifests)
+        key = [File.expand_path(root), distributions.map { |codename, d| [codename, d.type, d.labels] }.sort,
+               manifests.sort].inspect
         File.join(@dir, "#{Digest::SHA256.hexdigest(key)}.yml")
       end
 

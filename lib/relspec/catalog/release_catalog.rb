@@ -2,6 +2,7 @@
 
 require_relative "source"
 require_relative "pinning"
+require_relative "pinned_manifests"
 require_relative "selection"
 require_relative "metapackages"
 require_relative "release_gems"
@@ -36,6 +37,9 @@ module Relspec
         catalog = Source.load(workspace, distributions, cache: cache)
         root = SnapshotSource.snapshot?(workspace) ? nil : workspace
         pins = effective["pins"] || {}
+        # a pinned commit declares its own dependencies: load again with its manifest
+        manifests = root ? PinnedManifests.of(catalog, pins, root) : {}
+        catalog = Source.load(workspace, distributions, cache: cache, manifests: manifests) unless manifests.empty?
         pinned = Pinning.apply(catalog, pins, root: root,
                                               locate: ->(name) { effective.pin_origin(name)&.location })
         selections = select_all(pinned, effective, spec_file, workspace)

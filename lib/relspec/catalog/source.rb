@@ -15,16 +15,17 @@ module Relspec
       # +distributions+: codename => Spec::Distribution the OS dependencies
       # must be known for.
       # +cache+: a Catalog::Cache for workspaces (nil: always load).
-      def load(path, distributions, cache: nil)
+      # +manifests+: name => manifest.xml text read instead of the checkout's.
+      def load(path, distributions, cache: nil, manifests: {})
         if SnapshotSource.snapshot?(path)
           catalog = SnapshotSource.load(path)
           check_codenames(path, catalog, distributions.keys)
           catalog
         else
           require_relative "autoproj_source"
-          return AutoprojSource.load(path, distributions) unless cache
+          return AutoprojSource.load(path, distributions, manifests: manifests) unless cache
 
-          cache.fetch(path, distributions) { AutoprojSource.load(path, distributions) }
+          cache.fetch(path, distributions, manifests) { AutoprojSource.load(path, distributions, manifests: manifests) }
         end
       end
 
