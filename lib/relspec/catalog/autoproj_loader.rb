@@ -136,7 +136,7 @@ module Relspec
         end
       end
 
-      # +targets+: codename => [[type names], [labels]]
+      # +targets+: codename => [[type names], [labels], ruby keyword or nil]
       def load_all(root, targets, manifests)
         per_target = targets.to_h { |codename, os| [codename, load_one(root, os, manifests)] }
         first = per_target.values.first
@@ -149,9 +149,13 @@ module Relspec
 
       def load_one(root, operating_system, manifests)
         reset_global_state
-        resolver = Autoproj::OSPackageResolver.new(operating_system: operating_system)
+        types, labels, ruby_keyword = operating_system
+        resolver = Autoproj::OSPackageResolver.new(operating_system: [types, labels])
         managers = Autoproj::OSPackageInstaller::PACKAGE_MANAGERS.keys.to_h { |name| [name, InertPackageManager] }
         ws = Autoproj::Workspace.from_dir(root, os_package_resolver: resolver, package_managers: managers)
+        # the target's Ruby, not relspec's, picks the .osdeps-ruby<NN> files
+        # and what the `ruby` osdep means
+        ws.ruby_version_keyword = ruby_keyword if ruby_keyword
         ws.config.interactive = false
         ws.setup(read_only: true, load_global_configuration: false)
         # autoproj maps the `ruby` osdep to ruby31 on Ruby 3.1, which its own

@@ -79,7 +79,7 @@ module Relspec
 
       def operating_systems
         @distributions.to_h do |codename, distribution|
-          [codename, [distribution.osdeps_type_key.split(","), distribution.labels]]
+          [codename, [distribution.osdeps_type_key.split(","), distribution.labels, distribution.ruby_version_keyword]]
         end
       end
 

@@ -49,7 +49,7 @@ module Relspec
       private
 
       def entry_path(root, distributions, manifests)
-        key = [File.expand_path(root), distributions.map { |codename, d| [codename, d.type, d.labels] }.sort,
+        key = [File.expand_path(root), distributions.map { |codename, d| [codename, d.type, d.labels, d.ruby] }.sort,
                manifests.sort].inspect
         File.join(@dir, "#{Digest::SHA256.hexdigest(key)}.yml")
       end

@@ -9,10 +9,17 @@ module Relspec
     # repository entry with components), or nil. +debhelper_compat+: the
     # debhelper compatibility level generated debian/ folders use there (the
     # highest its debhelper supports; docs/compile.md lists the sources).
-    Distribution = Struct.new(:codename, :type, :labels, :archive, :debhelper_compat, keyword_init: true) do
-      def self.define(codename, type, labels, archive: nil, debhelper_compat: DEFAULT_DEBHELPER_COMPAT)
+    # +ruby+: the "major.minor" of the distribution's Ruby (autoproj loads
+    # `.osdeps-ruby<major><minor>` files for it), or nil when unknown.
+    Distribution = Struct.new(:codename, :type, :labels, :archive, :debhelper_compat, :ruby, keyword_init: true) do
+      def self.define(codename, type, labels, archive: nil, debhelper_compat: DEFAULT_DEBHELPER_COMPAT, ruby: nil)
         new(codename: codename, type: type, labels: labels.map(&:to_s).freeze, archive: archive&.freeze,
-            debhelper_compat: debhelper_compat).freeze
+            debhelper_compat: debhelper_compat, ruby: ruby).freeze
+      end
+
+      # autoproj's keyword for the distribution's Ruby ("ruby31"), or nil.
+      def ruby_version_keyword
+        ruby && "ruby#{ruby.delete('.')}"
       end
 
       def osdeps_type_key
@@ -40,17 +47,20 @@ module Relspec
 
       # debhelper of each distribution (docs/compile.md): xenial 9.20160115,
       # stretch 10.2.5, bionic 11.1.6, buster 12.1.1, focal 12.10,
-      # bullseye 13.3.4, jammy 13.6, bookworm 13.11.4, noble 13.14.1.
+      # bullseye 13.3.4, jammy 13.6, bookworm 13.11.4, noble 13.14.1. Their
+      # Ruby (the ruby package's default): xenial 2.3, stretch 2.3, bionic
+      # 2.5, buster 2.5, focal 2.7, bullseye 2.7, jammy 3.0, bookworm 3.1,
+      # noble 3.2.
       BUILTIN = [
-        Distribution.define("xenial", "ubuntu", %w[16.04 xenial xerus default], debhelper_compat: 9),
-        Distribution.define("bionic", "ubuntu", %w[18.04 bionic beaver default], debhelper_compat: 11),
-        Distribution.define("focal", "ubuntu", %w[20.04 focal fossa default], debhelper_compat: 12),
-        Distribution.define("jammy", "ubuntu", %w[22.04 jammy jellyfish default], debhelper_compat: 13),
-        Distribution.define("noble", "ubuntu", %w[24.04 noble numbat default], debhelper_compat: 13),
-        Distribution.define("stretch", "debian", %w[9 stretch default], debhelper_compat: 10),
-        Distribution.define("buster", "debian", %w[10 buster default], debhelper_compat: 12),
-        Distribution.define("bullseye", "debian", %w[11 bullseye default], debhelper_compat: 13),
-        Distribution.define("bookworm", "debian", %w[12 bookworm default], debhelper_compat: 13)
+        Distribution.define("xenial", "ubuntu", %w[16.04 xenial xerus default], debhelper_compat: 9, ruby: "2.3"),
+        Distribution.define("bionic", "ubuntu", %w[18.04 bionic beaver default], debhelper_compat: 11, ruby: "2.5"),
+        Distribution.define("focal", "ubuntu", %w[20.04 focal fossa default], debhelper_compat: 12, ruby: "2.7"),
+        Distribution.define("jammy", "ubuntu", %w[22.04 jammy jellyfish default], debhelper_compat: 13, ruby: "3.0"),
+        Distribution.define("noble", "ubuntu", %w[24.04 noble numbat default], debhelper_compat: 13, ruby: "3.2"),
+        Distribution.define("stretch", "debian", %w[9 stretch default], debhelper_compat: 10, ruby: "2.3"),
+        Distribution.define("buster", "debian", %w[10 buster default], debhelper_compat: 12, ruby: "2.5"),
+        Distribution.define("bullseye", "debian", %w[11 bullseye default], debhelper_compat: 13, ruby: "2.7"),
+        Distribution.define("bookworm", "debian", %w[12 bookworm default], debhelper_compat: 13, ruby: "3.1")
       ].to_h { |d| [d.codename, d] }.freeze
 
       # Built-ins overlaid with a spec's own definitions ({codename =>
@@ -61,7 +71,7 @@ module Relspec
           [codename, Distribution.define(codename, definition["type"] || known&.type,
                                          definition["labels"] || known&.labels || [], archive: definition["archive"],
                                          debhelper_compat: definition["debhelper_compat"] || known&.debhelper_compat ||
-                                                           DEFAULT_DEBHELPER_COMPAT)]
+                                                           DEFAULT_DEBHELPER_COMPAT, ruby: known&.ruby)]
         end
         BUILTIN.merge(own).freeze
       end
