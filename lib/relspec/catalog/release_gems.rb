@@ -27,6 +27,7 @@ module Relspec
 
         archives = fetch_all(catalog, gems, fetch, locate)
         check_requirements(archives, locate)
+        check_constraints(catalog, archives, locate)
         packages = archives.to_h { |name, archive| [name, package_of(archive, archives, catalog.codenames)] }
         users = catalog.packages.transform_values { |package| with_gem_dependencies(package, archives.keys, catalog.codenames) }
         extended = Catalog.new(packages: users.merge(packages), metapackages: catalog.metapackages, layout: catalog.layout,
@@ -67,6 +68,37 @@ module Relspec
           end
         end
         raise InvalidInput, problems unless problems.empty?
+      end
+
+      # An osdeps gem entry may carry a version constraint ("rice<4.0.0":
+      # Rock's bindings need the Rice 3 API); a version of `gems:` outside it
+      # is what autoproj would never install for that package.
+      def check_constraints(catalog, archives, locate)
+        problems = catalog.packages.sort.flat_map do |name, package|
+          entries = catalog.codenames.flat_map { |codename| package.os_dependencies_for(codename).gems }.uniq
+          entries.filter_map do |entry|
+            gem = Debian::Naming.gem_name(entry)
+            requirement = requirement_of(entry, gem)
+            archive = archives[gem]
+            next unless archive && requirement && !requirement.satisfied_by?(Gem::Version.new(archive.version))
+
+            Diagnostic.error("gem-constraint", "#{name}'s osdeps ask for gem #{gem} #{requirement}, the release " \
+                                               "packages #{gem} #{archive.version}",
+                             location: locate.call(gem), hint: "pick a version of #{gem} that fits #{requirement}")
+          end
+        end
+        raise InvalidInput, problems unless problems.empty?
+      end
+
+      # The Gem::Requirement of an osdeps gem entry, nil without one (or
+      # with one RubyGems cannot read, which autoproj would not accept either).
+      def requirement_of(entry, gem)
+        text = entry.delete_prefix(gem).strip
+        return nil if text.empty?
+
+        Gem::Requirement.new(*text.split(",").map(&:strip))
+      rescue Gem::Requirement::BadRequirementError
+        nil
       end
 
       def package_of(archive, archives, codenames)
