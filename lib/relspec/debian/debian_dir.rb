@@ -253,7 +253,7 @@ module Relspec
       WORKSPACE_URL = %r{\A\$AUTOPROJ_ROOT/}
 
       def shown_url(url)
-        url.match?(WORKSPACE_URL) ? "#{url.sub(WORKSPACE_URL, '')} (a repository of the autoproj workspace)" : url
+        url.match?(WORKSPACE_URL) ? "the autoproj workspace's #{url.sub(WORKSPACE_URL, '')}" : url
       end
 
       def public_url(url)

@@ -62,7 +62,9 @@ RSpec.describe "debian/copyright of a Rock package" do
   it "writes no unexpanded $AUTOPROJ_ROOT, and a public URL as the Source" do
     files = render(package)
     expect(files["changelog"]).not_to include("$AUTOPROJ_ROOT")
-    expect(files["changelog"]).to include("repositories/base/cmake.git (a repository of the autoproj workspace)")
+    expect(files["changelog"]).to include("  * Release r: base/cmake\n    from the autoproj workspace's repositories/base/cmake.git\n")
+    # (each line within lintian's 80 columns: debian-changelog-line-too-long)
+    expect(files["changelog"].lines.map { |line| line.chomp.length }.max).to be <= 80
     public = package(vcs: Relspec::Catalog::Vcs.from_h("type" => "git", "url" => "https://github.com/rock-core/base-cmake.git",
                                                        "commit" => "a" * 40))
     expect(parsed(render(public)["copyright"]).last).to eq("https://github.com/rock-core/base-cmake.git")
