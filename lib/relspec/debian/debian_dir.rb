@@ -69,7 +69,7 @@ module Relspec
                            :synopsis, :long_description, :codename, :release, :package_name, :vcs_url, :vcs_ref,
                            :commit, :date, :copyright_holders, :license, :license_name, :common_license, :public_source, :build_type, :install_dir, :dh_options,
                            :canonical, :dependency_dirs, :build_dirs, :gem_dir, :cmake_options, :guard, :gem_file, :version,
-                           :body, keyword_init: true)
+                           :body, :ruby_lib_dirs, keyword_init: true)
 
       # Each template becomes a method of Context, compiled once: evaluating
       # ERB source on every render (result_with_hash) cost a no-op compile of
@@ -99,7 +99,7 @@ module Relspec
           build_type: package.build_type, install_dir: install_dir, dh_options: dh_options(package.build_type),
           canonical: Naming.canonical(package.name), dependency_dirs: dependency_dirs,
           build_dirs: @in.fetch(:closure, dependency_dirs), gem_dir: GEM_DIR, cmake_options: cmake_options,
-          guard: "RELSPEC_ENV_#{source.gsub(/[^A-Za-z0-9]/, '_')}", gem_file: gem_file
+          guard: "RELSPEC_ENV_#{source.gsub(/[^A-Za-z0-9]/, '_')}", gem_file: gem_file, ruby_lib_dirs: ruby_lib_dirs
         }
       end
 
@@ -153,6 +153,21 @@ module Relspec
 
       def install_dir
         @in.fetch(:install_dir)
+      end
+
+      # What env.sh puts on RUBYLIB. RubyGems activates the highest version
+      # of a gem on GEM_PATH wherever it is (this machine has facets 4.0.0 as
+      # autoproj's dependency), and activating it for one file rules out the
+      # release's version for the next: only RUBYLIB makes the release's
+      # version win. A gem of the release: its require paths (facets 3.1.0
+      # has lib/core and lib/standard); other packages: <prefix>/lib (a Ruby
+      # package's gem links it to its lib/).
+      def ruby_lib_dirs
+        gem = @in[:gem]
+        return ["#{install_dir}/lib"] unless gem && @in.fetch(:package).build_type == "gem"
+
+        full_name = gem_file.delete_suffix(".gem")
+        gem.spec.require_paths.map { |path| "#{install_dir}/#{GEM_DIR}/gems/#{full_name}/#{path}" }
       end
 
       def rules_kind
@@ -300,7 +315,7 @@ module Relspec
           "prepend" => {
             "PATH" => ["#{dir}/bin"], "LD_LIBRARY_PATH" => ["#{dir}/lib"],
             "PKG_CONFIG_PATH" => ["#{dir}/lib/pkgconfig", "#{dir}/share/pkgconfig"], "CMAKE_PREFIX_PATH" => [dir],
-            "RUBYLIB" => ["#{dir}/lib"], "GEM_PATH" => ["#{dir}/#{GEM_DIR}"]
+            "RUBYLIB" => ruby_lib_dirs, "GEM_PATH" => ["#{dir}/#{GEM_DIR}"]
           }
         }
       end
