@@ -10,7 +10,7 @@ module Relspec
       # +targets+: Target => {package name => Decision}; +unavailable+:
       # Target => {package name => Cause} for the selected packages that
       # cannot exist there; +packages+: package name => source record;
-      # +release_digests+: [ancestor, codename] => SHA256 of the Release file read;
+      # +release_digests+: [ancestor, codename] => SHA256 of what the ancestor provides there (Inventory);
       # +last_builds+: Target => {package name => {"version", "debian_digest"}}
       # of packages not built now that an earlier lock recorded as built, so
       # their revisions go on where they stopped if they are built again.

@@ -1,0 +1,57 @@
+# frozen_string_literal: true
+
+require_relative "lock_view"
+require_relative "../error"
+require_relative "../yaml/located_document"
+
+module Relspec
+  module Diff
+    # What `relspec diff OLD NEW` accepts, as Snapshots: a lock file, a
+    # release folder (releases/<r>/ holding lock.yml), or a spec file, which
+    # is planned first. The spec file's own data is attached when known, so
+    # that spec-level changes can be shown.
+    module Input
+      LOCK_FILE = "lock.yml"
+
+      module_function
+
+      # +planner+: (spec path) => lock data, for spec inputs.
+      def snapshot(argument, planner:)
+        path = argument.to_s
+        if File.directory?(path)
+          release_folder(path)
+        elsif File.file?(path)
+          file(path, planner)
+        else
+          raise Error, "#{path}: no such lock file, release folder or spec"
+        end
+      end
+
+      def release_folder(path)
+        lock = File.join(path, LOCK_FILE)
+        raise Error, "#{path} is not a release folder: it has no #{LOCK_FILE}" unless File.file?(lock)
+
+        snapshot = LockView.parse(File.read(lock), source: lock)
+        spec = File.join(path, "..", "..", "specs", "#{snapshot.release}.yml")
+        File.file?(spec) ? snapshot.with_spec(spec_data(File.read(spec), spec)) : snapshot
+      end
+
+      def file(path, planner)
+        text = File.read(path)
+        data = spec_data(text, path)
+        return LockView.parse(text, source: path) if data.key?("relspec_lock")
+        raise Error, "#{path} is neither a relspec lock nor a release spec" unless data.key?("release")
+
+        LockView.snapshot(planner.call(path), source: path).with_spec(data)
+      end
+
+      # The spec (or lock) file's data; {} for anything that is not a mapping.
+      def spec_data(text, source)
+        document = Yaml::LocatedDocument.parse(text, file: source)
+        raise InvalidInput, document.diagnostics unless document.ok?
+
+        document.data.is_a?(Hash) ? document.data : {}
+      end
+    end
+  end
+end
