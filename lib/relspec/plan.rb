@@ -9,27 +9,40 @@ require_relative "plan/ancestor"
 require_relative "plan/inventory"
 require_relative "plan/planner"
 require_relative "plan/lock"
+require_relative "plan/lock_parser"
+require_relative "plan/lock_generator"
+require_relative "plan/settlement"
 require_relative "plan/gem_check"
 
 module Relspec
   # The release plan (DESIGN §3, §4): for every target and package, inherit,
   # build or published, with causes; recorded in releases/<r>/lock.yml.
   module Plan
-    # Everything one planning run produced.
-    # +recorded+: the builds the existing lock records (Lock.builds), read once.
-    Result = Struct.new(:resolution, :plan, :lock_path, :spec_digest, :own, :release_catalog, :ancestors, :recorded,
-                        keyword_init: true) do
+    # Everything one planning run produced. +lock+: the lock of this plan
+    # (to be written by plan --write and compile); +previous+: the lock read
+    # (nil when there was none or it was discarded); +work+: Target =>
+    # {package => Settlement::Work} for the builds, what compile emits.
+    Result = Struct.new(:resolution, :plan, :lock, :previous, :lock_path, :spec_digest, :own, :release_catalog,
+                        :ancestors, :work, :project_root, keyword_init: true) do
       def lock_text
-        Lock.dump(plan, spec_digest)
+        LockGenerator.dump(lock)
+      end
+
+      def write_lock
+        LockGenerator.write(lock_path, lock)
       end
     end
 
     # Plans the release of the spec at +path+. The project root (where
     # releases/ lives) is the folder above the spec's folder. +timeout+ is the
     # HTTP timeout in seconds; +cache_dir+ holds downloaded indices (nil: none).
-    def self.compute(path, timeout: 10, cache_dir: Apt::Cache.default_dir, catalog_cache: Catalog::Cache.new)
+    # +discard_lock+: start without the lock's history when it cannot be read.
+    def self.compute(path, timeout: 10, cache_dir: Apt::Cache.default_dir, catalog_cache: Catalog::Cache.new,
+                     discard_lock: false)
       resolution = Spec.resolve(path)
       effective = resolution.effective
+      lock_path = Lock.path(project_root(path), effective.release)
+      previous = read_lock(lock_path, effective.release, discard_lock)
       gem_fetch = Catalog::ReleaseGems.fetcher(effective, File.dirname(resolution.spec_file.path), timeout: timeout)
       release_catalog = Catalog::ReleaseCatalog.load(resolution, cache: catalog_cache, gem_fetch: gem_fetch)
       cache = Apt::Cache.new(cache_dir)
@@ -38,18 +51,16 @@ module Relspec
       targets = Target.all(effective)
       inventory = Inventory.read(ancestors, targets)
       own = read_own(resolution, targets, fetcher_options, cache)
-      lock_path = Lock.path(project_root(path), effective.release)
-      locked = Lock.read(lock_path)
-      recorded = Lock.builds(locked)
-      GemCheck.call(locked, release_catalog, resolution)
+      GemCheck.call(previous, release_catalog, resolution)
       distribution = read_distribution(resolution, release_catalog, targets, fetcher_options, cache)
       planner = Planner.new(release_catalog: release_catalog, effective: effective, spec_file: resolution.spec_file,
-                            ancestors: ancestors, inventory: inventory, own: own, revisions: Lock.revisions(recorded),
-                            distribution: distribution)
-      Result.new(resolution: resolution, plan: with_recorded_builds(planner.plan, recorded), lock_path: lock_path,
-                 recorded: recorded,
-                 spec_digest: Lock.spec_digest(effective), own: own, release_catalog: release_catalog,
-                 ancestors: ancestors)
+                            ancestors: ancestors, inventory: inventory, distribution: distribution)
+      root = project_root(path)
+      plan, work = settle(planner.plan, release_catalog, effective, ancestors, own, previous, root)
+      spec_digest = Lock.spec_digest(effective)
+      Result.new(resolution: resolution, plan: plan, lock: Lock.from_plan(plan, spec_digest, previous&.history || History.empty),
+                 previous: previous, lock_path: lock_path, spec_digest: spec_digest, own: own,
+                 release_catalog: release_catalog, ancestors: ancestors, work: work, project_root: root)
     end
 
     # The folder above the spec's folder (where releases/ and overlays/ are),
@@ -58,27 +69,23 @@ module Relspec
       DisplayPath.of(File.dirname(File.dirname(File.expand_path(path))))
     end
 
-    # What the lock recorded of earlier builds stays: the debian/ digests of
-    # the builds whose version did not change, and the last build of packages
-    # not built now, so that writing the lock from `plan --write` never loses
-    # what decides the next revision.
-    def self.with_recorded_builds(plan, recorded)
-      return plan if recorded.empty?
+    # The lock, strictly read: one that cannot be read stops the run unless
+    # the user chose to discard it (its history is then lost, and the
+    # repository alone keeps revisions from being given twice).
+    def self.read_lock(lock_path, release, discard)
+      LockParser.read(lock_path, release: release)
+    rescue LockError
+      raise unless discard
 
-      last_builds = plan.targets.keys.to_h do |target|
-        not_built = plan.targets.fetch(target).reject { |_, decision| decision.build? || decision.published? }.keys +
-                    plan.unavailable.fetch(target).keys
-        [target, recorded.fetch(target.to_s, {}).slice(*not_built)]
-      end
-      targets = plan.targets.to_h do |target, decisions|
-        [target, decisions.transform_values do |decision|
-          entry = recorded.dig(target.to_s, decision.package)
-          next decision if decision.inherit? || entry.nil? || entry["version"] != decision.version || !entry["debian_digest"]
+      nil
+    end
 
-          Decision.new(**decision.each_pair.to_h, debian_digest: entry["debian_digest"]).freeze
-        end]
-      end
-      plan.with_targets(targets, last_builds: last_builds.reject { |_, builds| builds.empty? })
+    def self.settle(plan, release_catalog, effective, ancestors, own, previous, root)
+      inputs = DebianInputs.new(effective: effective, ancestors: ancestors, release_catalog: release_catalog)
+      versioning = Versioning.new(history: previous&.history || History.empty, own: own)
+      targets, work = Settlement.new(catalog: release_catalog.catalog, inputs: inputs, versioning: versioning,
+                                     project_root: root).call(plan.targets)
+      [plan.with_targets(targets), work]
     end
 
     # The targets' own ruby-* packages for the gems of the release.
@@ -106,6 +113,6 @@ module Relspec
       raise InvalidInput, [Diagnostic.error("own-repository", "the repository of #{resolution.effective.release}: #{e.message}",
                                             location: spec_file.key_location(["repository"]))]
     end
-    private_class_method :read_own, :read_distribution, :with_recorded_builds
+    private_class_method :read_own, :read_distribution, :read_lock, :settle
   end
 end

@@ -12,13 +12,15 @@ require "open3"
 class AptRepositoryBuilder
   attr_reader :dir
 
-  def initialize(dir, codenames:, architectures:, sign_with: nil, gnupg_home: nil)
+  # +valid_for+: reprepro's ValidFor (e.g. "1d"), which writes Valid-Until.
+  def initialize(dir, codenames:, architectures:, sign_with: nil, gnupg_home: nil, valid_for: nil)
     @dir = dir
     @debs = File.join(dir, ".debs")
     @gnupg_home = gnupg_home
     FileUtils.mkdir_p([File.join(dir, "conf"), @debs])
     File.write(File.join(dir, "conf", "distributions"), codenames.map do |codename|
       sign = sign_with ? "SignWith: #{sign_with}\n" : ""
+      sign += "ValidFor: #{valid_for}\n" if valid_for
       "Codename: #{codename}\nSuite: #{codename}\nArchitectures: #{architectures.join(' ')} source\n" \
         "Components: main\n#{sign}"
     end.join("\n"))

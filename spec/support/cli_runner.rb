@@ -20,9 +20,11 @@ module CliRunner
   CACHE = Dir.mktmpdir("relspec-test-cache")
   at_exit { FileUtils.rm_rf(CACHE) }
 
-  def relspec(*args, chdir: ROOT)
-    stdout, stderr, status = Open3.capture3({ "XDG_CACHE_HOME" => CACHE }, RbConfig.ruby, EXE, *args, chdir: chdir,
-                                                                                                stdin_data: "")
+  # +env+: more environment variables; +umask+: the child's umask.
+  def relspec(*args, chdir: ROOT, env: {}, umask: nil)
+    options = { chdir: chdir, stdin_data: "" }
+    options[:umask] = umask if umask
+    stdout, stderr, status = Open3.capture3({ "XDG_CACHE_HOME" => CACHE }.merge(env), RbConfig.ruby, EXE, *args, **options)
     Run.new(stdout: stdout, stderr: stderr, status: status)
   end
 end

@@ -41,7 +41,7 @@ class ReleaseFixture
   def version(package, codename, commit_time: nil)
     entry = @catalog.package(package)
     upstream = Relspec::Debian::PackageVersion.upstream(entry.version, commit_time || entry.commit_time)
-    Relspec::Debian::PackageVersion.full(upstream, 1, codename)
+    Relspec::Debian::PackageVersion.new(upstream, 1, codename).to_s
   end
 
   def deb(release, package)

@@ -12,9 +12,15 @@ module Relspec
 
       Entry = Struct.new(:name, :version, :depends, :provides, :source, :architecture)
 
+      # The index is not what it seems: a stanza without Package or Version,
+      # or a Version that is not a Debian version (which must never reach a
+      # generated debian/control).
+      class Invalid < StandardError; end
+
       attr_reader :entries
 
-      # Raises Deb822::ParseError (with a line number) or ArgumentError.
+      # Raises Deb822::ParseError (with a line number) or Invalid (naming the
+      # stanza).
       #
       # The fast scanner reads only the wanted fields; a stanza without
       # Package or Version means the text is not what it seems, and the full
@@ -22,12 +28,17 @@ module Relspec
       # checked: indices are verified against a signed Release file.)
       def self.parse(text)
         entries = {}
+        number = 0
         PackagesScanner.new(text).each(FIELDS) do |stanza|
+          number += 1
           name = stanza["Package"]
           version = stanza["Version"]
           unless name && version
             Deb822.parse(text)
-            raise ArgumentError, "a stanza has no Package or Version field"
+            raise Invalid, "stanza #{number} has no Package or Version field"
+          end
+          unless Version.valid?(version)
+            raise Invalid, "stanza #{number} (Package: #{name}) has an invalid Version #{version.strip.inspect}"
           end
 
           known = entries[name]

@@ -32,6 +32,9 @@ module Relspec
         prefixes = fields.map { |field| "#{field}: ".b }
         upcoming = Array.new(fields.size, -1)
         text = @text
+        # a line of only spaces or tabs separates stanzas (deb822(5), and
+        # the C reader); make it empty so "\n\n" finds every boundary
+        text = text.gsub(/^[ \t]+$/, "") if text.match?(/^[ \t]+$/)
         start = 0
         length = text.bytesize
         while start < length

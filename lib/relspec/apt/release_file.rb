@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require "digest"
+require "time"
 require_relative "deb822"
 
 module Relspec
@@ -11,7 +12,7 @@ module Relspec
     class ReleaseFile
       Checksum = Struct.new(:sha256, :size)
 
-      attr_reader :codename, :architectures, :components, :checksums, :sha256
+      attr_reader :codename, :suite, :architectures, :components, :checksums, :sha256, :valid_until
 
       # +text+: the (verified, unarmored) Release text; +raw+: the bytes as
       # fetched (InRelease or Release), whose digest identifies what was read.
@@ -24,6 +25,8 @@ module Relspec
 
       def initialize(fields, sha256)
         @codename = fields["Codename"] || fields["Suite"]
+        @suite = fields["Suite"]
+        @valid_until = parse_time(fields["Valid-Until"])
         @architectures = fields.fetch("Architectures", "").split
         @components = fields.fetch("Components", "").split
         @checksums = parse_checksums(fields["SHA256"])
@@ -35,7 +38,28 @@ module Relspec
         checksums[path]
       end
 
+      # Is this the Release file of distribution +name+? As apt sees it: its
+      # Codename or its Suite names it. A signed Release of another
+      # distribution served under this name (a replay) is not.
+      def describes?(name)
+        [codename, suite].compact.include?(name)
+      end
+
+      # apt's rule: a Release file whose Valid-Until has passed is refused,
+      # however good its signature (an attacker could replay an old one).
+      def expired?(now)
+        !valid_until.nil? && valid_until < now
+      end
+
       private
+
+      def parse_time(text)
+        return nil if text.nil?
+
+        Time.strptime(text.strip, "%a, %d %b %Y %H:%M:%S %z").utc
+      rescue ArgumentError
+        raise Deb822::ParseError.new("Valid-Until is not a date (#{text.strip})", 1)
+      end
 
       def parse_checksums(field)
         return {}.freeze unless field

@@ -18,7 +18,7 @@ module Relspec
     # architecture, verified against the SHA256 the Release file gives.
     class Repository
       # Any problem reading the repository; the message names the URL.
-      class Error < StandardError; end
+      class Error < Relspec::RepositoryError; end
 
       # The repository has no such codename, or no index for that
       # architecture: for a release's own repository that only means nothing
@@ -29,7 +29,9 @@ module Relspec
 
       attr_reader :fetcher
 
-      def initialize(fetcher, keyring: nil, trusted: false, cache: Cache.new(nil))
+      # +clock+ gives the current time, against which Valid-Until is checked.
+      def initialize(fetcher, keyring: nil, trusted: false, cache: Cache.new(nil), clock: -> { Time.now })
+        @clock = clock
         @fetcher = fetcher
         @keyring = keyring
         @trusted = trusted
@@ -47,21 +49,45 @@ module Relspec
 
       # The Packages index of +codename+/+component+/+arch+.
       def packages(codename, arch, component: "main")
-        release = release(codename)
-        directory = "#{component}/binary-#{arch}"
-        listed = COMPRESSIONS.map { |file, kind| ["#{directory}/#{file}", kind] }.select { |path, _| release.checksum(path) }
-        if listed.empty?
-          raise Missing, "#{url}/dists/#{codename}/Release lists no #{directory}/Packages index " \
-                       "(architectures: #{release.architectures.join(' ')})"
-        end
+        text, where = verified_index(codename, arch, component)
+        PackageIndex.parse(text)
+      rescue Deb822::ParseError, PackageIndex::Invalid => e
+        raise Error, "#{where}: malformed index: #{e.message}"
+      end
 
-        path, kind = listed.first
-        PackageIndex.parse(decompress(index_bytes(codename, release, path), kind, "#{url}/dists/#{codename}/#{path}"))
-      rescue Deb822::ParseError, ArgumentError => e
-        raise Error, "#{url}/dists/#{codename}/#{path}: malformed index: #{e.message}"
+      # The same index as verified, uncompressed text (for readers that need
+      # other fields than PackageIndex keeps).
+      def packages_text(codename, arch, component: "main")
+        verified_index(codename, arch, component).first
+      end
+
+      # What identifies the content of that index without reading it: the
+      # SHA256 the Release file gives for it (raises Missing like packages).
+      def index_digest(codename, arch, component: "main")
+        release = release(codename)
+        release.checksum(listed_indices(release, codename, arch, component).first.first).sha256
       end
 
       private
+
+      # [text, where it was read]
+      def verified_index(codename, arch, component)
+        release = release(codename)
+        path, kind, bytes = first_present(codename, release, listed_indices(release, codename, arch, component))
+        where = "#{url}/dists/#{codename}/#{path}"
+        [decompress(bytes, kind, where), where]
+      end
+
+      # [[path, compression]] the Release file lists for that index, in the
+      # order they are tried.
+      def listed_indices(release, codename, arch, component)
+        directory = "#{component}/binary-#{arch}"
+        listed = COMPRESSIONS.map { |file, kind| ["#{directory}/#{file}", kind] }.select { |path, _| release.checksum(path) }
+        return listed unless listed.empty?
+
+        raise Missing, "#{url}/dists/#{codename}/Release lists no #{directory}/Packages index " \
+                       "(architectures: #{release.architectures.join(' ')})"
+      end
 
       def read_release(codename)
         base = "dists/#{codename}"
@@ -75,11 +101,24 @@ module Relspec
 
             [detached_content(plain, base), plain]
           end
-        ReleaseFile.parse(text, raw: raw)
+        check_release(ReleaseFile.parse(text, raw: raw), codename, base)
       rescue Fetcher::Failure => e
         raise Error, e.message
       rescue Deb822::ParseError, ArgumentError, TypeError => e
         raise Error, "#{url}/#{base}: malformed Release file: #{e.message}"
+      end
+
+      def check_release(release, codename, base)
+        unless release.describes?(codename)
+          raise Error, "#{url}/#{base}: the Release file is of #{[release.codename, release.suite].compact.uniq.join('/')}, " \
+                       "not #{codename} (a Release file served under another distribution's name is refused)"
+        end
+        if release.expired?(@clock.call)
+          raise Error, "#{url}/#{base}: the Release file expired on " \
+                       "#{release.valid_until.strftime('%Y-%m-%d %H:%M:%S UTC')} (Valid-Until); the repository must " \
+                       "be exported again"
+        end
+        release
       end
 
       def clearsigned_content(bytes, where)
@@ -103,6 +142,22 @@ module Relspec
         raise Error, "#{url}/#{base}/Release: signature check failed: #{e.message}"
       end
 
+      # Mirrors often drop Packages.xz while their Release still lists it:
+      # the next form the Release lists is read instead (each is checked
+      # against its own checksum). Only when none is there is it an error.
+      def first_present(codename, release, listed)
+        missing = nil
+        listed.each do |path, kind|
+          return [path, kind, index_bytes(codename, release, path)]
+        rescue MissingIndex => e
+          missing ||= e
+        end
+        raise Error, missing.message
+      end
+
+      class MissingIndex < Error; end
+      private_constant :MissingIndex
+
       def index_bytes(codename, release, path)
         checksum = release.checksum(path)
         cached = @fetcher.remote? ? @cache.read(release.sha256, "#{codename}/#{path}") : nil
@@ -110,7 +165,7 @@ module Relspec
 
         where = "#{url}/dists/#{codename}/#{path}"
         bytes = @fetcher.fetch("dists/#{codename}/#{path}")
-        raise Error, "#{where} is listed in the Release file but missing" unless bytes
+        raise MissingIndex, "#{where} is listed in the Release file but missing" unless bytes
 
         verify(bytes, checksum, where)
         @cache.write(release.sha256, "#{codename}/#{path}", bytes) if @fetcher.remote?
@@ -129,7 +184,8 @@ module Relspec
       def decompress(bytes, kind, where)
         text =
           case kind
-          when :gzip then Zlib::GzipReader.new(StringIO.new(bytes)).read
+          # every gzip member, as gzip -d does (GzipReader alone stops after the first)
+          when :gzip then Zlib::GzipReader.zcat(StringIO.new(bytes))
           when :xz then xz_decompress(bytes, where)
           else bytes
           end

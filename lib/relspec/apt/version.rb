@@ -11,6 +11,19 @@ module Relspec
       include Comparable
 
       FORMAT = /\A(?:(\d+):)?([A-Za-z0-9.+~:-]*?)(?:-([A-Za-z0-9.+~]*))?\z/
+      # deb-version(5): the upstream part starts with a digit; a colon only
+      # with an epoch, a hyphen only with a revision.
+      VALID = /\A(?:\d+:[0-9][A-Za-z0-9.+~:-]*|[0-9][A-Za-z0-9.+~-]*)\z/
+
+      # Is +text+ a Debian version dpkg accepts? (Cheap: no object made.)
+      def self.valid?(text)
+        text = text.strip
+        return false unless VALID.match?(text)
+
+        match = FORMAT.match(text)
+        !match.nil? && !match[2].empty? && match[2].match?(/\A[0-9]/) && (match[1] || !match[2].include?(":")) &&
+          (match[3].nil? || !match[3].empty?)
+      end
 
       attr_reader :epoch, :upstream, :revision
 
@@ -21,7 +34,7 @@ module Relspec
       def initialize(text)
         @text = text.strip
         match = FORMAT.match(@text)
-        raise ArgumentError, "invalid Debian version #{text.inspect}" unless match && !match[2].empty?
+        raise ArgumentError, "invalid Debian version #{text.inspect}" unless match && Version.valid?(@text)
 
         @epoch = match[1].to_i
         @upstream = match[2]
@@ -41,8 +54,18 @@ module Relspec
         other.is_a?(Version) && (self <=> other).zero?
       end
 
+      # Equal versions hash alike: dpkg compares runs of digits as numbers
+      # ("1.0" is "1.00") and treats a missing trailing digit run as 0 ("1.0"
+      # is "1."; an empty revision is "0"), so the key is each part as
+      # (non-digit run, number) pairs without trailing ("", 0) pairs.
       def hash
-        [epoch, upstream.sub(/\A0+/, ""), revision].hash
+        [epoch, self.class.key(upstream), self.class.key(revision)].hash
+      end
+
+      def self.key(part)
+        pairs = part.scan(/(\D*)(\d*)/).map { |letters, digits| [letters, digits.to_i] }
+        pairs.pop while pairs.last == ["", 0]
+        pairs
       end
 
       def to_s

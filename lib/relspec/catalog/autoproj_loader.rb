@@ -75,7 +75,7 @@ module Relspec
       # workspace, autoproj's included, is raised as a WorkspaceProblem.
       def load(root, targets)
         install_patches
-        load_all(root, targets)
+        on_stderr { load_all(root, targets) }
       rescue Autoproj::ConfigError, Autoproj::PackageNotFound, Autobuild::Exception, Autoproj::InputError => e
         raise autoproj_problem(e)
       rescue ArgumentError => e
@@ -86,6 +86,19 @@ module Relspec
                                                                                                   hint: "check `package_sets:` in autoproj/manifest, or run `autoproj update`")
       ensure
         reset_global_state
+      end
+
+      # autobuild's progress display writes to STDOUT (with terminal escape
+      # codes): relspec's stdout is its output (JSON, plans), so autoproj's
+      # messages go to stderr while it loads, without progress lines.
+      def on_stderr
+        previous = Autobuild.instance_variable_get(:@display)
+        display = Autobuild::ProgressDisplay.new($stderr)
+        display.progress_enabled = false
+        Autobuild.instance_variable_set(:@display, display)
+        yield
+      ensure
+        Autobuild.instance_variable_set(:@display, previous)
       end
 
       def autoproj_problem(error)
@@ -148,6 +161,8 @@ module Relspec
         Rake::Task.clear
         Autoproj.workspace = nil
         Autobuild.env = nil
+        # package sets set project-wide CMake flags here (Autobuild::CMake.define)
+        Autobuild::CMake.defines.clear
       end
 
       def extract(ws)
@@ -158,9 +173,22 @@ module Relspec
         resolved = Hash.new { |cache, name| cache[name] = classify(ws.os_package_resolver, name) }
         manifest.each_package_definition do |definition|
           packages[definition.name] = package_data(ws, definition)
-          os_dependencies[definition.name] = merge_classified(definition.autobuild.os_packages.sort.map { |name| resolved[name] })
+          os_dependencies[definition.name] = os_dependencies_of(definition.autobuild, resolved)
         end
         { packages: packages, os_dependencies: os_dependencies, workspace: workspace_data(manifest) }
+      end
+
+      # Mandatory OS dependencies, and the optional ones kept as autoproj
+      # keeps them (import.rb: an optional dependency is added unless it is
+      # excluded, and an osdep the OS cannot provide is excluded). The ones
+      # left out are listed under "optional_missing", for plan's notes.
+      def os_dependencies_of(autobuild, resolved)
+        _, optional = autobuild.partition_optional_dependencies
+        optional -= autobuild.os_packages.to_a
+        kept, missing = optional.partition { |name| (resolved[name].keys & %w[nonexistent unresolved]).empty? }
+        merged = merge_classified((autobuild.os_packages.to_a + kept).sort.map { |name| resolved[name] })
+        merged["optional_missing"] = missing.sort unless missing.empty?
+        merged
       end
 
       def workspace_data(manifest)
@@ -184,8 +212,21 @@ module Relspec
           "package_set" => definition.package_set.name, "build_type" => build_type(autobuild),
           "vcs" => vcs_data(ws, definition.vcs), "source_dir" => relative(ws, autobuild.srcdir),
           "checked_out" => definition.checked_out?, "dependencies" => autobuild.dependencies.sort,
-          "optional_dependencies" => optional_packages.sort
-        }.merge(manifest_data(ws, autobuild.description))
+          "optional_dependencies" => optional_packages.sort, "defines" => defines_of(ws, autobuild)
+        }.compact.merge(manifest_data(ws, autobuild.description))
+      end
+
+      # The -D options autoproj would give CMake for this package: the
+      # package set's global ones (Autobuild::CMake.define), then the
+      # package's own (pkg.define); not the prefix and paths autoproj derives
+      # from its own layout, which the release decides. A value naming a
+      # folder of the workspace is kept relative to $AUTOPROJ_ROOT.
+      def defines_of(ws, autobuild)
+        return nil unless autobuild.respond_to?(:defines)
+
+        defines = Autobuild::CMake.defines.merge(autobuild.defines)
+        defines = defines.to_h { |key, value| [key.to_s, value.to_s.gsub(ws.root_dir, "$AUTOPROJ_ROOT")] }
+        defines.empty? ? nil : defines.sort.to_h
       end
 
       def build_type(autobuild)

@@ -1,5 +1,7 @@
 # frozen_string_literal: true
 
+require "psych"
+
 require_relative "../catalog"
 require_relative "../diagnostic"
 require_relative "../error"
@@ -36,11 +38,27 @@ module Relspec
       private
 
       def check_workspace
-        return if File.file?(File.join(@root, ".autoproj", "config.yml"))
+        config = File.join(@root, ".autoproj", "config.yml")
+        return check_config(config) if File.file?(config)
 
         what = File.directory?(@root) ? "is not an autoproj workspace (no .autoproj/config.yml)" : "does not exist"
         fail_with("not-a-workspace", "#{@root} #{what}",
                   "point `workspace:` at the root of an autoproj workspace or at a catalog snapshot (.yml)")
+      end
+
+      # autoproj reads config.yml with YAML.load and lets a syntax error
+      # escape as a bare Psych error: say which file, where, before loading.
+      def check_config(path)
+        document = Psych.parse(File.read(path))
+        return if document.nil? || document.root.is_a?(Psych::Nodes::Mapping)
+
+        raise InvalidInput, [Diagnostic.error("workspace-config", ".autoproj/config.yml is not a mapping of autoproj settings",
+                                              location: Location.file_only(path),
+                                              hint: "fix the file, or run `autoproj reconfigure` in the workspace")]
+      rescue Psych::SyntaxError => e
+        raise InvalidInput, [Diagnostic.error("workspace-config", "malformed .autoproj/config.yml: #{e.problem}",
+                                              location: Location.new(file: path, line: e.line, column: e.column).freeze,
+                                              hint: "fix the file, or run `autoproj reconfigure` in the workspace")]
       end
 
       # autoproj's own messages go to stderr while it loads: relspec's
@@ -82,7 +100,7 @@ module Relspec
             source_dir: entry["source_dir"], checked_out: entry["checked_out"], version: entry["version"],
             summary: entry["summary"], description: entry["description"], license: entry["license"],
             maintainer: entry["maintainer"], dependencies: entry["dependencies"],
-            optional_dependencies: entry["optional_dependencies"],
+            optional_dependencies: entry["optional_dependencies"], defines: entry["defines"],
             os_dependencies: entry["os_dependencies"].transform_values { |deps| OsDependencies.from_h(deps) }
           )
           [name, package]

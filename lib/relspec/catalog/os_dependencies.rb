@@ -5,9 +5,11 @@ module Relspec
     # The OS dependencies of one package resolved for one distribution, as
     # autoproj's osdeps resolve them: Debian packages, gems, names the
     # distribution does not need (ignore), names it cannot provide
-    # (nonexistent) and names no osdeps file defines for it (unresolved).
+    # (nonexistent) and names no osdeps file defines for it (unresolved);
+    # optional ones the distribution cannot provide are left out, as
+    # autoproj leaves them out, and listed (optional_missing) for plan.
     class OsDependencies
-      FIELDS = %w[apt gems ignored nonexistent unresolved].freeze
+      FIELDS = %w[apt gems ignored nonexistent unresolved optional_missing].freeze
 
       attr_reader(*FIELDS)
 
@@ -19,12 +21,13 @@ module Relspec
         build(**FIELDS.to_h { |field| [field.to_sym, hash.fetch(field, [])] })
       end
 
-      def initialize(apt:, gems:, ignored:, nonexistent:, unresolved:)
+      def initialize(apt:, gems:, ignored:, nonexistent:, unresolved:, optional_missing: [])
         @apt = apt.uniq.sort.freeze
         @gems = gems.uniq.sort.freeze
         @ignored = ignored.uniq.sort.freeze
         @nonexistent = nonexistent.uniq.sort.freeze
         @unresolved = unresolved.uniq.sort.freeze
+        @optional_missing = optional_missing.uniq.sort.freeze
         freeze
       end
 

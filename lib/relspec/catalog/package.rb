@@ -14,13 +14,13 @@ module Relspec
       BUILD_TYPES = %w[cmake orogen autotools ruby python import archive meta gem].freeze
 
       FIELDS = %i[name package_set build_type vcs commit_time version summary description license maintainer
-                  source_dir checked_out dependencies optional_dependencies os_dependencies].freeze
+                  source_dir checked_out dependencies optional_dependencies os_dependencies defines].freeze
 
       attr_reader(*FIELDS)
 
       def initialize(name:, package_set:, build_type:, vcs:, commit_time:, source_dir:, checked_out: true, version: nil,
                      summary: nil, description: nil, license: nil, maintainer: nil, dependencies: [],
-                     optional_dependencies: [], os_dependencies: {})
+                     optional_dependencies: [], os_dependencies: {}, defines: {})
         @name = name
         @package_set = package_set
         @build_type = build_type
@@ -36,7 +36,15 @@ module Relspec
         @dependencies = dependencies.uniq.sort.freeze
         @optional_dependencies = optional_dependencies.uniq.sort.freeze
         @os_dependencies = os_dependencies.sort.to_h.freeze
+        @build_dependencies = (@dependencies + @optional_dependencies).uniq.sort.freeze
+        # CMake -D options of the package set (pkg.define), name => value
+        @defines = (defines || {}).sort.to_h.freeze
         freeze
+      end
+
+      # Every package of the workspace this one needs when it is built.
+      def build_dependencies
+        @build_dependencies
       end
 
       def os_dependencies_for(codename)
@@ -63,7 +71,7 @@ module Relspec
           "license" => license, "maintainer" => maintainer, "source_dir" => source_dir,
           "checked_out" => checked_out ? nil : false,
           "dependencies" => dependencies, "optional_dependencies" => optional_dependencies,
-          "os_dependencies" => os_dependencies.transform_values(&:to_h)
+          "os_dependencies" => os_dependencies.transform_values(&:to_h), "defines" => defines
         }.reject { |_key, value| value.nil? || value == [] || value == {} }
       end
 
@@ -74,7 +82,8 @@ module Relspec
           summary: hash["summary"], description: hash["description"], checked_out: hash.fetch("checked_out", true), license: hash["license"], maintainer: hash["maintainer"],
           source_dir: hash["source_dir"], dependencies: hash.fetch("dependencies", []),
           optional_dependencies: hash.fetch("optional_dependencies", []),
-          os_dependencies: hash.fetch("os_dependencies", {}).transform_values { |deps| OsDependencies.from_h(deps) }
+          os_dependencies: hash.fetch("os_dependencies", {}).transform_values { |deps| OsDependencies.from_h(deps) },
+          defines: hash.fetch("defines", {})
         )
       end
     end

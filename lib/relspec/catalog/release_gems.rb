@@ -2,6 +2,7 @@
 
 require_relative "package"
 require_relative "gem_archive"
+require_relative "../debian/naming"
 require_relative "../cache_dir"
 require_relative "../diagnostic"
 require_relative "../error"
@@ -81,7 +82,8 @@ module Relspec
       end
 
       def with_gem_dependencies(package, gem_names, codenames)
-        used = codenames.flat_map { |codename| package.os_dependencies_for(codename).gems } & gem_names
+        used = codenames.flat_map { |codename| package.os_dependencies_for(codename).gems }
+                        .map { |entry| Debian::Naming.gem_name(entry) } & gem_names
         used.empty? ? package : package.with(dependencies: package.dependencies + used)
       end
 

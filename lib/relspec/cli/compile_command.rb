@@ -7,7 +7,9 @@ module Relspec
     # `relspec compile SPEC`: the source packages of everything the release
     # builds, plan.yml per target, the lock and the osdeps files.
     class CompileCommand
-      def initialize(path:, out:, jobs:, timeout:, out_io:, progress_io: nil)
+      def initialize(path:, out:, jobs:, timeout:, out_io:, progress_io: nil, discard_lock: false, check: true)
+        @discard_lock = discard_lock
+        @check = check
         @path = path
         @out = out
         @jobs = jobs
@@ -17,18 +19,28 @@ module Relspec
       end
 
       def call
-        result = Compile.run(@path, out: @out, jobs: @jobs, timeout: @timeout, progress: progress_bar)
+        result = Compile.run(@path, out: @out, jobs: @jobs, timeout: @timeout, progress: progress_bar,
+                                    discard_lock: @discard_lock, check: @check)
         if result.written.empty? && !result.lock_changed && result.osdeps_written.zero?
           @io.puts("#{result.release}: nothing changed (#{result.unchanged.size} source packages up to date)")
         else
           result.written.each { |dir| @io.puts("wrote #{dir}") }
           @io.puts("#{result.release}: #{result.written.size} source packages written, #{result.unchanged.size} unchanged, " \
                    "#{result.published.size} already published; #{result.lock_changed ? 'wrote' : 'kept'} #{result.lock_path}")
+          note_unchecked(result.unchecked)
         end
         0
       end
 
       private
+
+      # Said once, when sources are written (a compile with nothing changed
+      # stays one line).
+      def note_unchecked(unchecked)
+        return if unchecked.empty?
+
+        @io.puts("note: OS dependencies not checked on #{unchecked.map { |r| "#{r.target} (#{r.reason})" }.join('; ')}")
+      end
 
       # A bar on a terminal (stderr), nothing otherwise or with --quiet.
       def progress_bar

@@ -17,6 +17,8 @@ module Relspec
         true
       end
 
+      DISCARD_LOCK = "Start over when releases/<release>/lock.yml cannot be read (its build history is lost)"
+
       class_option :debug, type: :boolean, default: false, desc: "Show backtraces of internal errors"
       class_option :quiet, type: :boolean, default: false, desc: "No progress output"
 
@@ -65,10 +67,12 @@ module Relspec
       option :format, enum: %w[text json markdown], default: "text", desc: "Output format"
       option :target, type: :string, desc: "Only this target (codename/arch)"
       option :timeout, type: :numeric, default: 10, desc: "HTTP timeout in seconds"
+      option :discard_lock, type: :boolean, default: false, desc: DISCARD_LOCK
       def plan(path)
         require_relative "plan_command"
         finish PlanCommand.new(path: path, format: options[:format], write: options[:write], target: options[:target],
-                               timeout: options[:timeout], out: $stdout, err: $stderr).call
+                               timeout: options[:timeout], out: $stdout, err: $stderr,
+                               discard_lock: options[:discard_lock]).call
       end
 
       desc "compile SPEC", "Emit the Debian source packages the release must build, plan.yml, lock and osdeps"
@@ -77,15 +81,46 @@ module Relspec
         .debian.tar.xz, .dsc) per build decision into
         <out>/<release>/<codename>-<arch>/<source>/, plan.yml per target (the builds
         in dependency order), releases/<release>/lock.yml and the osdeps files. A
-        compile with nothing changed writes nothing.
+        compile with nothing changed writes nothing. First, the OS dependencies are
+        checked as `relspec check` does (apt archives; Launchpad answers from its
+        cache only): a release with missing ones is refused unless --no-check.
       TEXT
       option :out, type: :string, default: "build", desc: "Where the source packages go"
       option :jobs, type: :numeric, default: 2, desc: "Packages emitted in parallel"
       option :timeout, type: :numeric, default: 10, desc: "HTTP timeout in seconds"
+      option :discard_lock, type: :boolean, default: false, desc: DISCARD_LOCK
+      option :check, type: :boolean, default: true, desc: "Refuse a release with missing OS dependencies (--no-check: skip)"
+      option :launchpad_url, type: :string, default: "https://api.launchpad.net/1.0", desc: "Whose cached answers to use"
       def compile(path)
         require_relative "compile_command"
         finish CompileCommand.new(path: path, out: options[:out], jobs: options[:jobs], timeout: options[:timeout],
-                                  out_io: $stdout, progress_io: options[:quiet] ? nil : $stderr).call
+                                  out_io: $stdout, progress_io: options[:quiet] ? nil : $stderr,
+                                  discard_lock: options[:discard_lock],
+                                  check: options[:check] && { launchpad_base: options[:launchpad_url] }).call
+      end
+
+      desc "check SPEC", "Check that the OS dependencies of the release exist on every target"
+      long_desc <<~TEXT
+        Every Build-Depends and Depends relation relspec writes for the packages the
+        release builds must resolve on each target (by name, through Provides, or as an
+        Architecture: all package). Sources: the distribution's apt archive
+        (distributions.<codename>.archive; host: true for this machine's apt lists) or
+        Launchpad for Ubuntu targets (auto: the archive where one is configured).
+        Prints what is missing, with the packages that need it and a similar name that
+        exists. Exits 1 when something is missing or a source could not answer.
+        See docs/check.md.
+      TEXT
+      option :target, type: :string, desc: "Only this target (codename/arch)"
+      option :source, enum: %w[auto apt launchpad], default: "auto", desc: "Where availability is read"
+      option :format, enum: %w[text json markdown], default: "text", desc: "Output format"
+      option :timeout, type: :numeric, default: 10, desc: "HTTP timeout in seconds"
+      option :launchpad_url, type: :string, default: "https://api.launchpad.net/1.0", desc: "Launchpad web service root"
+      option :concurrency, type: :numeric, default: 4, desc: "Launchpad requests in flight at once"
+      def check(path)
+        require_relative "check_command"
+        finish CheckCommand.new(path: path, format: options[:format], target: options[:target], source: options[:source],
+                                timeout: options[:timeout], launchpad_url: options[:launchpad_url],
+                                concurrency: options[:concurrency], out: $stdout).call
       end
 
       desc "why SPEC PACKAGE", "Explain one package's decision, with its full cause chain"
@@ -104,7 +139,13 @@ module Relspec
       subcommand "osdeps", OsdepsCommands
 
       # `relspec osdeps SPEC` is `relspec osdeps render SPEC`.
+      # Options of every command that people also write before the command
+      # (`relspec --debug compile SPEC`); Thor only reads them after it.
+      GLOBAL_FLAGS = %w[--debug --no-debug --quiet --no-quiet].freeze
+
       def self.normalize(argv)
+        leading = argv.take_while { |arg| GLOBAL_FLAGS.include?(arg) }
+        argv = argv.drop(leading.size) + leading unless leading.empty? || argv.size == leading.size
         return argv unless argv[0] == "osdeps" && argv[1] && !argv[1].start_with?("-")
         return argv if OsdepsCommands.all_commands.key?(argv[1]) || argv[1] == "help"
 

@@ -94,8 +94,7 @@ module Relspec
 
         missing = []
         present = lambda do |target, decision|
-          held = decision.inherit? || decision.system? ||
-                 result.own.version_of(decision.deb_name, target) == decision.version
+          held = !decision.build?
           missing << "#{target} #{decision.package} (#{decision.deb_name} #{decision.version})" unless held
           held
         end

@@ -2,13 +2,15 @@
 
 require_relative "../plan"
 require_relative "../plan/report"
+require_relative "discarded_lock"
 
 module Relspec
   module CLI
     # `relspec plan SPEC`: what the release inherits, builds and has already
     # published, and why. Writes the lock only with --write.
     class PlanCommand
-      def initialize(path:, format:, write:, target:, timeout:, out:, err:)
+      def initialize(path:, format:, write:, target:, timeout:, out:, err:, discard_lock: false)
+        @discard_lock = discard_lock
         @path = path
         @format = format
         @write = write
@@ -19,10 +21,11 @@ module Relspec
       end
 
       def call
-        result = Plan.compute(@path, timeout: @timeout)
+        result = Plan.compute(@path, timeout: @timeout, discard_lock: @discard_lock)
+        DiscardedLock.warn(result, @err)
         plan = result.plan
         targets = selected_targets(plan)
-        report = Plan::Report.new(plan, result.spec_digest, targets: targets)
+        report = Plan::Report.new(plan, result.lock, targets: targets)
         @out.write(render(report))
         write_lock(result) if @write
         0
@@ -31,15 +34,7 @@ module Relspec
       private
 
       def selected_targets(plan)
-        return plan.targets.keys unless @target
-
-        wanted = Plan::Target.parse(@target)
-        found = plan.targets.keys.find { |target| target == wanted }
-        raise Error, "#{@target} is not a target of #{plan.release} (#{plan.targets.keys.join(', ')})" unless found
-
-        [found]
-      rescue ArgumentError => e
-        raise Error, e.message
+        Plan::Target.select(@target, plan.targets.keys, plan.release)
       end
 
       def render(report)
@@ -51,7 +46,7 @@ module Relspec
       end
 
       def write_lock(result)
-        changed = Plan::Lock.write(result.lock_path, result.plan, result.spec_digest)
+        changed = result.write_lock
         @err.puts(changed ? "wrote #{result.lock_path}" : "#{result.lock_path} is up to date")
       end
     end

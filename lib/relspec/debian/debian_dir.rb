@@ -3,12 +3,14 @@
 require "erb"
 require "digest"
 require_relative "naming"
+require_relative "control_relations"
 require_relative "../yaml/writer"
 
 module Relspec
   module Debian
     # The debian/ folder of one package built in a release, from ERB
-    # templates per build type (debhelper compat 13, 3.0 (quilt)).
+    # templates per build type (3.0 (quilt); the debhelper compat level of
+    # the target distribution, whose features the templates keep to).
     #
     # Inputs (a Hash, see BuildInput in emitter.rb): the catalog Package, its
     # Debian name and version, the target codename, the release's settings,
@@ -21,13 +23,14 @@ module Relspec
       ARCH_INDEPENDENT = %w[ruby import archive meta].freeze
       DH_OPTIONS = { "cmake" => " --buildsystem=cmake", "orogen" => " --buildsystem=cmake",
                      "autotools" => " --buildsystem=autoconf" }.freeze
-      BUILD_TOOLS = { "cmake" => ["cmake"], "orogen" => ["cmake"], "autotools" => %w[autoconf automake libtool],
-                      "ruby" => %w[ruby git], "gem" => ["ruby"], "import" => [], "archive" => [], "meta" => [] }.freeze
 
-      # +revision+ stays a placeholder when computing the digest of debian/,
-      # which must not depend on the revision it decides.
-      def self.render(input, revision:)
-        new(input).render(revision)
+      # Stands for the version in the debian/ whose digest decides the
+      # revision (the digest must not depend on what it decides).
+      VERSION_PLACEHOLDER = "@RELSPEC_VERSION@"
+
+      # +version+: the PackageVersion, or nil for the digest's rendering.
+      def self.render(input, version:)
+        new(input).render(version)
       end
 
       def initialize(input)
@@ -35,10 +38,10 @@ module Relspec
       end
 
       # {relative path => [content, mode]}
-      def render(revision)
+      def render(version)
         files = {
           "control" => template("control.erb"),
-          "changelog" => template("changelog.erb", version: full_version(revision)),
+          "changelog" => template("changelog.erb", version: (version || VERSION_PLACEHOLDER).to_s),
           "copyright" => template("copyright.erb"),
           "rules" => template("rules.erb", body: template("rules_#{rules_kind}.erb")),
           "source/format" => "3.0 (quilt)\n",
@@ -47,6 +50,8 @@ module Relspec
           "#{source}.lintian-overrides" => "# packages of a release live in /opt by design\n" \
                                            "#{source}: dir-or-file-in-opt [#{install_dir.delete_prefix('/')}/*]\n"
         }
+        # debhelper-compat in Build-Depends needs debhelper 11.1.4; older ones read debian/compat
+        files["compat"] = "#{compat}\n" if compat < BUILD_DEPENDS_COMPAT
         files.to_h { |path, content| [path, [content, path == "rules" ? 0o755 : 0o644]] }
       end
 
@@ -63,7 +68,8 @@ module Relspec
       Context = Struct.new(:source, :section, :maintainer, :build_depends, :depends, :homepage, :architecture,
                            :synopsis, :long_description, :codename, :release, :package_name, :vcs_url, :vcs_ref,
                            :commit, :date, :copyright_holder, :license, :build_type, :install_dir, :dh_options,
-                           :canonical, :dependency_dirs, :gem_file, :version, :body, keyword_init: true)
+                           :canonical, :dependency_dirs, :build_dirs, :gem_dir, :cmake_options, :guard, :gem_file, :version,
+                           :body, keyword_init: true)
 
       # Each template becomes a method of Context, compiled once: evaluating
       # ERB source on every render (result_with_hash) cost a no-op compile of
@@ -89,8 +95,43 @@ module Relspec
           vcs_ref: vcs_ref(package.vcs), commit: package.vcs.commit.to_s, date: changelog_date,
           copyright_holder: package.maintainer || @in.fetch(:maintainer), license: package.license || "unknown",
           build_type: package.build_type, install_dir: install_dir, dh_options: DH_OPTIONS.fetch(package.build_type, ""),
-          canonical: Naming.canonical(package.name), dependency_dirs: dependency_dirs, gem_file: gem_file
+          canonical: Naming.canonical(package.name), dependency_dirs: dependency_dirs,
+          build_dirs: @in.fetch(:closure, dependency_dirs), gem_dir: GEM_DIR, cmake_options: cmake_options,
+          guard: "RELSPEC_ENV_#{source.gsub(/[^A-Za-z0-9]/, '_')}", gem_file: gem_file
         }
+      end
+
+      BUILD_DEPENDS_COMPAT = 11
+
+      # Where gems install below a package's prefix (GEM_PATH entry). Not
+      # lib/ruby/gems: Rock's FindGem.cmake takes every file whose path has
+      # "<gem name>…/lib/" as a library of the gem, and a prefix named
+      # …-ruby-<gem> followed by /lib/ made it link every sample .so of rice.
+      GEM_DIR = "gems"
+
+      def compat
+        @in.fetch(:debhelper_compat, 13)
+      end
+
+      def debhelper
+        compat < BUILD_DEPENDS_COMPAT ? "debhelper (>= #{compat})" : "debhelper-compat (= #{compat})"
+      end
+
+      # What Rock's autoproj configuration gives CMake for a package: its
+      # build type, tests off (base/cmake's ROCK_TEST_ENABLED); then the
+      # package set's defines (pkg.define, Autobuild::CMake.define), which
+      # win; then the prefix, which the release decides. Each option is one
+      # shell word; "$" is doubled for make.
+      ROCK_CMAKE_DEFINES = { "CMAKE_BUILD_TYPE" => "Release", "ROCK_TEST_ENABLED" => "OFF" }.freeze
+
+      def cmake_options
+        defines = ROCK_CMAKE_DEFINES.merge(@in.fetch(:package).defines)
+                                    .merge("CMAKE_INSTALL_PREFIX" => "$(PREFIX)", "CMAKE_INSTALL_LIBDIR" => "lib")
+        defines.map do |name, value|
+          option = "-D#{name}=#{value}"
+          option = option.gsub("$", "$$") unless value == "$(PREFIX)"
+          option.match?(%r{\A[-\w=./:,+$()]*\z}) ? option : "'#{option.gsub("'", "'\\\\''")}'"
+        end.join(" ")
       end
 
       def source
@@ -117,10 +158,6 @@ module Relspec
         kind == "archive" ? "import" : kind
       end
 
-      def full_version(revision)
-        "#{@in.fetch(:upstream)}-#{revision}~#{@in.fetch(:codename)}"
-      end
-
       # A gem is architecture-dependent only when it compiles an extension.
       def architecture
         return @in.fetch(:gem).native? ? "any" : "all" if @in.fetch(:package).build_type == "gem"
@@ -128,33 +165,25 @@ module Relspec
         ARCH_INDEPENDENT.include?(@in.fetch(:package).build_type) ? "all" : "any"
       end
 
-      # build-essential is implied for every build (and Policy forbids listing it).
-      IMPLIED = %w[build-essential].freeze
+      def own_relations
+        @in.fetch(:dependencies).map { |dep| "#{dep[:deb_name]} (>= #{dep[:version]})" }
+      end
 
-      def relations
-        own = @in.fetch(:dependencies).map { |dep| "#{dep[:deb_name]} (>= #{dep[:version]})" }
-        own + (@in.fetch(:apt) - IMPLIED) + @in.fetch(:gems)
+      # The OS part: apt names and distribution gems (already ruby-<gem>).
+      def os_relations
+        ControlRelations.os_relations(@in.fetch(:apt), @in.fetch(:gems))
       end
 
       def build_depends
-        return ["debhelper-compat (= 13)"] if meta?
-
-        tools = BUILD_TOOLS.fetch(@in.fetch(:package).build_type, [])
-        (["debhelper-compat (= 13)"] + tools + relations).uniq
+        ControlRelations.build_depends(@in.fetch(:package).build_type, own_relations, os_relations, debhelper: debhelper)
       end
 
       def meta?
         @in.fetch(:package).build_type == "meta"
       end
 
-      # Build tools autoproj adds as OS dependencies of every cmake or
-      # autotools package; a built package does not need them to run.
-      BUILD_ONLY = %w[cmake autoconf automake libtool pkg-config ruby-dev].freeze
-
       def depends
-        base = architecture == "any" ? ["${shlibs:Depends}", "${misc:Depends}"] : ["${misc:Depends}"]
-        base += ["ruby"] if %w[ruby gem].include?(@in.fetch(:package).build_type)
-        (base + (relations - BUILD_ONLY)).uniq
+        ControlRelations.depends(@in.fetch(:package).build_type, architecture, own_relations, os_relations)
       end
 
       def homepage
@@ -174,9 +203,14 @@ module Relspec
 
       # Description paragraphs as debian/control wants them: one leading
       # space, "." for empty lines.
+      # manifest.xml indents its text like the XML around it: each line is
+      # taken without its indentation (a Debian description line starting
+      # with two spaces would be shown verbatim), runs of empty lines become
+      # one, and a first paragraph that only repeats the synopsis is left out.
       def long_description
         text = @in.fetch(:package).description || synopsis
-        lines = text.strip.lines.map(&:rstrip)
+        lines = text.strip.lines.map(&:strip).chunk_while { |a, b| a.empty? && b.empty? }.map(&:first)
+        lines = lines.drop(1).drop_while(&:empty?) if lines.first&.delete_suffix(".") == synopsis && lines.size > 1
         lines += ["", "Built from #{@in.fetch(:package).name} for release #{@in.fetch(:release)}."]
         lines.map { |line| line.empty? ? " ." : " #{line}" }.join("\n")
       end
@@ -202,7 +236,7 @@ module Relspec
           "prepend" => {
             "PATH" => ["#{dir}/bin"], "LD_LIBRARY_PATH" => ["#{dir}/lib"],
             "PKG_CONFIG_PATH" => ["#{dir}/lib/pkgconfig", "#{dir}/share/pkgconfig"], "CMAKE_PREFIX_PATH" => [dir],
-            "RUBYLIB" => ["#{dir}/lib"], "GEM_PATH" => ["#{dir}/lib/ruby/gems"]
+            "RUBYLIB" => ["#{dir}/lib"], "GEM_PATH" => ["#{dir}/#{GEM_DIR}"]
           }
         }
       end

@@ -15,6 +15,12 @@ module Relspec
 
       # The name Debian gives the package of gem +gem+ (ruby-concurrent-ruby
       # for concurrent-ruby; Debian sometimes differs, see docs/compile.md).
+      # The gem's name in an osdeps gem entry, which may carry a version
+      # constraint ("rice<4.0.0").
+      def gem_name(entry)
+        entry[/\A[^<>=~!\s]+/]
+      end
+
       def distribution_gem(gem)
         "ruby-#{canonical(gem)}"
       end
@@ -29,6 +35,24 @@ module Relspec
           else ""
           end
         "#{prefix}-#{release}-#{kind}#{canonical(package_name)}"
+      end
+
+      # The files of a source package, as dpkg-source names them: the epoch
+      # of a version never appears in a file name.
+      def orig_tarball(source, upstream)
+        "#{source}_#{upstream}.orig.tar.gz"
+      end
+
+      def debian_tarball(source, version)
+        "#{source}_#{without_epoch(version)}.debian.tar.xz"
+      end
+
+      def dsc(source, version)
+        "#{source}_#{without_epoch(version)}.dsc"
+      end
+
+      def without_epoch(version)
+        version.to_s.sub(/\A\d+:/, "")
       end
     end
   end

@@ -13,18 +13,16 @@ module Relspec
     # Git checkouts: `git archive` of the commit (files in tree order, mtime =
     # commit time, uid/gid 0, modes 0644/0755, nothing untracked: no VCS or
     # build folders) piped through `gzip -n` (no name, no time stamp). Other
-    # sources: GNU tar with the same normalisation (--sort=name, --mtime,
-    # --owner=0 --group=0 --numeric-owner, --mode, --exclude-vcs), paths over
-    # 256 bytes in GNU long-name records.
+    # sources (unpacked gems, metapackages, checkouts without git): GNU tar
+    # with the same normalisation (--sort=name, --mtime, --owner=0 --group=0
+    # --numeric-owner, --mode), paths over 256 bytes in GNU long-name
+    # records; the prefix is put before member names only, never into the
+    # targets of symbolic links (flag S of --transform).
     module OrigTarball
       # Raised when the tarball cannot be made.
-      class Failure < Relspec::Error; end
+      class Failure < Relspec::ToolError; end
 
       module_function
-
-      def file_name(source, upstream)
-        "#{source}_#{upstream}.orig.tar.gz"
-      end
 
       # Writes the tarball of +checkout+ at +commit+ (nil: the tree as it is,
       # dated +mtime+, a Time) to +path+, with everything under +prefix+/.
@@ -43,13 +41,14 @@ module Relspec
       def tar_command(dir, prefix, mtime, everything: false)
         excludes = everything ? [] : ["--exclude-vcs", "--exclude=./build", "--exclude=./_build"]
         ["tar", "--sort=name", "--format=gnu", "--mtime=@#{mtime.to_i}", "--owner=0", "--group=0", "--numeric-owner",
-         "--mode=u+rwX,go+rX,go-w", *excludes, "--transform=s,^\\.,#{prefix},", "-C", dir, "-cf", "-", "."]
+         "--mode=u+rwX,go+rX,go-w", *excludes, "--transform=s,^\\.,#{prefix},S", "-C", dir, "-cf", "-", "."]
       end
 
       # Writes +command+'s output through `gzip -n` to +path+.
       def pipe(command, path)
         File.open(path, "wb") do |out|
-          statuses = Open3.pipeline(command, %w[gzip -n -c], out: out, err: File::NULL)
+          statuses = Open3.pipeline([{ "LC_ALL" => "C.UTF-8", "TZ" => "UTC" }, *command], %w[gzip -n -c],
+                                    out: out, err: File::NULL, umask: 0o022)
           raise Failure, "#{command.first} failed making #{File.basename(path)}" unless statuses.all?(&:success?)
         end
       rescue SystemCallError => e

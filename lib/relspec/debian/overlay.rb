@@ -7,7 +7,8 @@ require_relative "../error"
 module Relspec
   module Debian
     # overlays/<package>/ (package name with "/" kept as folders):
-    #   files/…        files copied over the source (they end up in the orig tarball)
+    #   files/…        files over the source, carried as one generated quilt patch
+    #                  (the orig tarball stays the upstream tree: OverlayPatch)
     #   patches/*.patch quilt patches, listed in debian/patches/series in name order
     #   debian/…       files replacing the generated debian/ ones
     #   @<arch>/patches, @<arch>/debian   the same for one architecture only,
@@ -19,6 +20,8 @@ module Relspec
     class Overlay
       PLACEHOLDERS = %w[@RELSPEC_INSTALL_DIR@ @RELSPEC_RELEASE@ @RELSPEC_PACKAGE@].freeze
 
+      attr_reader :dir
+
       def self.for(root, package_name, arch: nil)
         new(File.join(root, "overlays", package_name), arch)
       end
@@ -29,7 +32,7 @@ module Relspec
         return unless arch && File.directory?(File.join(dir, "@#{arch}", "files"))
 
         raise InvalidInput, [problem(File.join(dir, "@#{arch}", "files"),
-                                     "files/ cannot be per architecture: the orig tarball is shared by every target "                                      "(use a patch in @#{arch}/patches/)")]
+                                     "files/ cannot be per architecture (use a patch in @#{arch}/patches/)")]
       end
 
       def empty?

@@ -6,6 +6,8 @@ require "tmpdir"
 require_relative "orig_tarball"
 require_relative "debian_dir"
 require_relative "overlay"
+require_relative "overlay_patch"
+require_relative "naming"
 require_relative "../atomic_file"
 require_relative "../diagnostic"
 require_relative "../error"
@@ -16,20 +18,26 @@ module Relspec
     # into its folder of the build tree, with `dpkg-source -b`. The work
     # happens in a temporary folder beside the destination, which replaces the
     # old one only when everything succeeded.
+    #
+    # The bytes depend only on the inputs: the orig tarball is the upstream
+    # tree (overlay files travel as a patch in debian/), and every file and
+    # folder relspec puts into debian/ gets a fixed mode whatever the umask.
     class SourcePackage
       STAMP = ".relspec-input"
+      # dpkg-source and tar run with this umask and these settings, so that
+      # the caller's environment never reaches an archive.
+      TOOL_ENV = { "LC_ALL" => "C.UTF-8", "TZ" => "UTC" }.freeze
+      TOOL_UMASK = 0o022
 
-      # +input+: DebianDir input; +files+: a block rendering debian/ (called
-      # only when the package is emitted); +digest+: the digest of debian/
-      # recorded in the lock; +version+: the full version; +checkout+: the
-      # package's source folder;
-      # +overlay+: its Overlay; +orig_cache+: folder where orig tarballs are
-      # made once per upstream version and shared by every target.
-      def initialize(input:, files:, digest:, version:, checkout:, overlay:, orig_cache:, substitutions:)
+      # +input+: DebianDir input; +version+: the settled PackageVersion;
+      # +digest+: the digest of debian/ it was settled from; +checkout+: the
+      # package's source folder; +overlay+: its Overlay; +orig_cache+: folder
+      # where orig tarballs are made once per upstream version and shared by
+      # every target.
+      def initialize(input:, version:, digest:, checkout:, overlay:, orig_cache:, substitutions:)
         @input = input
-        @render = files
-        @digest = digest
         @version = version
+        @digest = digest
         @checkout = checkout
         @overlay = overlay
         @orig_cache = orig_cache
@@ -41,16 +49,16 @@ module Relspec
       end
 
       def upstream
-        @input.fetch(:upstream)
+        @version.upstream
       end
 
       def dsc_name
-        "#{source}_#{@version.sub(/\A\d+:/, '')}.dsc"
+        Naming.dsc(source, @version)
       end
 
       # What the emitted files are made of; equal stamps mean equal files.
       def stamp
-        Digest::SHA256.hexdigest([@input.fetch(:package).vcs.commit, upstream, @version, @digest].join("\0"))
+        Digest::SHA256.hexdigest([@input.fetch(:package).vcs.commit, upstream, @version.to_s, @digest].join("\0"))
       end
 
       # Writes into +dir+ unless it already holds these files. True if written.
@@ -64,6 +72,7 @@ module Relspec
         begin
           build_in(work)
           File.write(File.join(work, "out", STAMP), stamp)
+          File.chmod(0o755, File.join(work, "out"))
           FileUtils.rm_rf(dir)
           File.rename(File.join(work, "out"), dir)
         ensure
@@ -88,34 +97,38 @@ module Relspec
         end
       end
 
-      # Made once per upstream version (and overlay) and copied to every target.
+      # The upstream tree, made once per upstream version and copied to
+      # every target.
       def orig_tarball
-        name = OrigTarball.file_name(source, upstream)
-        overlay_files = @overlay.files(@substitutions)
-        # what the tarball is made of besides the commit: a gem's own bytes, an overlay
-        made_of = [@input[:gem]&.sha256, *overlay_files.sort.flatten].compact
-        key = made_of.empty? ? "plain" : Digest::SHA256.hexdigest(made_of.join("\0"))[0, 16]
+        name = Naming.orig_tarball(source, upstream)
+        gem = @input[:gem]
+        # a gem's tarball is its own bytes: a different .gem is another cache entry
+        key = gem ? gem.sha256[0, 16] : "upstream"
         path = File.join(@orig_cache, key, name)
         return path if File.file?(path)
 
         FileUtils.mkdir_p(File.dirname(path))
         temporary = "#{path}.#{Process.pid}.#{Thread.current.object_id}.tmp"
-        package = @input.fetch(:package)
-        if package.build_type == "meta"
-          with_meta_tree { |tree| OrigTarball.write(temporary, checkout: tree, commit: nil, prefix: "#{source}-#{upstream}", mtime: commit_time) }
-        elsif overlay_files.empty? && package.build_type != "gem"
-          OrigTarball.write(temporary, checkout: @checkout, commit: package.vcs.commit, prefix: "#{source}-#{upstream}",
-                                       mtime: commit_time)
-        else
-          with_overlaid_tree(overlay_files) do |tree|
-            OrigTarball.write(temporary, checkout: tree, commit: nil, prefix: "#{source}-#{upstream}", mtime: commit_time,
-                                         everything: !@input[:gem].nil?)
-          end
-        end
+        write_orig(temporary)
         File.rename(temporary, path)
         path
       ensure
         File.unlink(temporary) if temporary && File.exist?(temporary)
+      end
+
+      def write_orig(path)
+        package = @input.fetch(:package)
+        prefix = "#{source}-#{upstream}"
+        if package.build_type == "meta"
+          with_meta_tree { |tree| OrigTarball.write(path, checkout: tree, commit: nil, prefix: prefix, mtime: commit_time) }
+        elsif @input[:gem]
+          Dir.mktmpdir("relspec-gem") do |tree|
+            @input[:gem].unpack(tree)
+            OrigTarball.write(path, checkout: tree, commit: nil, prefix: prefix, mtime: commit_time, everything: true)
+          end
+        else
+          OrigTarball.write(path, checkout: @checkout, commit: package.vcs.commit, prefix: prefix, mtime: commit_time)
+        end
       end
 
       # A metapackage has no source: its tarball holds a README naming the members.
@@ -127,52 +140,54 @@ module Relspec
         end
       end
 
-      # The upstream tree (the commit's files, or the unpacked gem) with the
-      # overlay's files over it.
-      def with_overlaid_tree(overlay_files)
-        Dir.mktmpdir("relspec-overlay") do |dir|
-          tree = File.join(dir, "tree")
-          FileUtils.mkdir_p(tree)
-          unpack_upstream(dir, tree)
-          overlay_files.each do |path, content|
-            target = File.join(tree, path)
-            FileUtils.mkdir_p(File.dirname(target))
-            File.binwrite(target, content)
-          end
-          yield tree
-        end
-      end
-
-      def unpack_upstream(dir, tree)
-        gem = @input[:gem]
-        return gem.unpack(tree) if gem
-
-        archive = File.join(dir, "source.tar.gz")
-        OrigTarball.pipe(["git", "-C", @checkout, "archive", "--format=tar", @input.fetch(:package).vcs.commit], archive)
-        run(%W[tar -xzf #{archive} -C #{tree}], dir)
-      end
-
       def commit_time
         Time.utc(*@input.fetch(:package).commit_time.scan(/\d+/).map(&:to_i))
       end
 
       def write_debian(tree)
         debian = File.join(tree, "debian")
-        files = @render.call.merge(@overlay.debian_files(@substitutions).transform_values { |content| [content, 0o644] })
+        files = DebianDir.render(@input, version: @version)
+                         .merge(@overlay.debian_files(@substitutions).transform_values { |content| [content, 0o644] })
         files["rules"] = [files["rules"][0], 0o755]
-        patches = @overlay.patches(@input.fetch(:package).name)
+        patches = patches_over(tree)
         patches.each { |name, content| files["patches/#{name}"] = [content, 0o644] }
         files["patches/series"] = [patches.map { |name, _| "#{name}\n" }.join, 0o644] unless patches.empty?
         files.each do |path, (content, mode)|
           target = File.join(debian, path)
-          FileUtils.mkdir_p(File.dirname(target))
+          make_dirs(tree, File.dirname(target))
           File.binwrite(target, content)
           File.chmod(mode, target)
         end
       end
 
+      # The overlay's files as the first patch, then its own patches.
+      def patches_over(tree)
+        files = @overlay.files(@substitutions)
+        upstream = lambda do |path|
+          file = File.join(tree, path)
+          File.file?(file) && !File.symlink?(file) ? File.binread(file) : nil
+        end
+        generated = OverlayPatch.of(files, upstream: upstream, package_name: @input.fetch(:package).name,
+                                           overlay_dir: @overlay.dir)
+        (generated ? [[OverlayPatch::NAME, generated]] : []) + @overlay.patches(@input.fetch(:package).name)
+      end
+
+      # mkdir -p with mode 0755 whatever the umask (the folders of debian/
+      # go into the .debian.tar.xz with their modes).
+      def make_dirs(root, dir)
+        missing = []
+        until dir == root || File.directory?(dir)
+          missing.unshift(dir)
+          dir = File.dirname(dir)
+        end
+        missing.each do |path|
+          Dir.mkdir(path)
+          File.chmod(0o755, path)
+        end
+      end
+
       def run(command, dir)
-        output, status = Open3.capture2e({ "LC_ALL" => "C.UTF-8" }, *command, chdir: dir)
+        output, status = Open3.capture2e(TOOL_ENV, *command, chdir: dir, umask: TOOL_UMASK)
         return if status.success?
 
         fail_with(command, output)

@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require_relative "../apt/repository"
+require_relative "../apt/host_lists"
 
 module Relspec
   module Plan
@@ -49,6 +50,14 @@ module Relspec
                      targets: release.value("targets"), location: release.location,
                      install_prefix: release.value("install_prefix") || "/opt/rock",
                      separate_prefixes: release.value("separate_prefixes") != false).freeze
+      end
+
+      # A distribution's archive entry as a reader: this machine's apt lists
+      # for `host: true` (Apt::HostLists), else a repository as below.
+      def archive_reader(archive, base, fetcher_options, cache)
+        return Apt::HostLists.new if archive["host"] == true
+
+        reader(archive, base, fetcher_options, cache)
       end
 
       # A repository entry ({path, url, keyring, trusted}) as a reader; the

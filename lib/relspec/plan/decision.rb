@@ -7,7 +7,9 @@ module Relspec
     # - build: it is built here (+deb_name+, +version+, +cause+);
     # - published: it was built here already and the release's repository holds it;
     # - system: a gem the target distribution itself provides (+deb_name+ ruby-…, +version+).
-    # +debian_digest+ (builds, once compiled): the digest of the generated debian/.
+    # +version+: a Debian::PackageVersion for builds (settled by Versioning),
+    # the index's version text otherwise; +debian_digest+ (builds): the
+    # digest of the debian/ the version was settled from.
     Decision = Struct.new(:package, :kind, :deb_name, :version, :ancestor, :cause, :debian_digest, keyword_init: true) do
       def inherit?
         kind == :inherit
@@ -26,7 +28,7 @@ module Relspec
       end
 
       def to_h
-        entry = { "decision" => kind.to_s, "deb" => deb_name, "version" => version }
+        entry = { "decision" => kind.to_s, "deb" => deb_name, "version" => version&.to_s }
         entry["from"] = ancestor if ancestor
         entry["causes"] = cause.chain if cause
         entry["debian_digest"] = debian_digest if debian_digest

@@ -27,7 +27,7 @@ module Relspec
           archive = distributions.fetch(target.codename).archive
           next unless archive
 
-          repository = Ancestors.reader(archive, spec_dir, fetcher_options, cache)
+          repository = Ancestors.archive_reader(archive, spec_dir, fetcher_options, cache)
           found[target] = versions(repository, archive, target, wanted)
         rescue Apt::Repository::Missing => e
           # e.g. Ubuntu's arm64 lives on ports.ubuntu.com, not in the amd64 archive

@@ -14,9 +14,9 @@ module Relspec
     module GemCheck
       module_function
 
-      # +locked+: the previous lock's data (Lock.read) or nil.
+      # +locked+: the previous Lock, or nil.
       def call(locked, release_catalog, resolution)
-        recorded = (locked && locked["packages"]) || {}
+        recorded = locked&.packages || {}
         problems = release_catalog.gems.filter_map do |name, archive|
           before = recorded[name]
           next unless before && before["version"] == Debian::PackageVersion.of_gem(archive.version) &&

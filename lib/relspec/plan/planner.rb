@@ -29,10 +29,9 @@ module Relspec
       # +release_catalog+: Catalog::ReleaseCatalog; +effective+: the
       # release's EffectiveSpec; +spec_file+: its SpecFile (for locations);
       # +ancestors+: Plan::Ancestor in search order; +inventory+: Inventory;
-      # +own+: OwnRepository; +revisions+: "codename/arch" => package =>
-      # {upstream => revision} remembered by the previous lock;
       # +distribution+: DistributionPackages (the targets' own ruby-* packages).
-      def initialize(release_catalog:, effective:, spec_file:, ancestors:, inventory:, own:, revisions: {},
+      # Builds come out unversioned: Settlement gives them their versions.
+      def initialize(release_catalog:, effective:, spec_file:, ancestors:, inventory:,
                      distribution: DistributionPackages.new({}, []))
         @catalog = release_catalog.catalog
         @selections = release_catalog.selections
@@ -40,8 +39,6 @@ module Relspec
         @spec_file = spec_file
         @ancestors = ancestors
         @inventory = inventory
-        @own = own
-        @revisions = revisions
         @distribution = distribution
         @warnings = []
         @notes = []
@@ -63,6 +60,7 @@ module Relspec
       def plan_target(target, blacklist)
         selection = @selections.fetch(target.codename)
         names = selection.names
+        names.each { |name| note_optional_missing(@catalog.package(name), target) }
         providers = names.to_h { |name| [name, providers_of(@catalog.package(name), target)] }
         causes = names.to_h { |name| [name, direct_cause(@catalog.package(name), target, providers[name], blacklist)] }.compact
         system = names.to_h { |name| [name, from_distribution(@catalog.package(name), target, causes[name])] }.compact
@@ -163,7 +161,7 @@ module Relspec
         dependents = Hash.new { |hash, key| hash[key] = [] }
         names.each do |name|
           package = @catalog.package(name)
-          (package.dependencies + package.optional_dependencies).each do |dependency|
+          package.build_dependencies.each do |dependency|
             dependents[dependency] << name if selected[dependency]
           end
         end
@@ -196,20 +194,13 @@ module Relspec
 
       def built(package, target, cause)
         deb = deb_name(package, @effective["package_prefix"], @effective.release)
-        upstream = upstream(package)
-        unless upstream
+        unless upstream(package)
           raise InvalidInput, [Diagnostic.error("unknown-commit-time",
                                                 "cannot version #{package.name}: the time of its commit is unknown",
                                                 location: @spec_file.location(["workspace"]),
                                                 hint: "plan from the workspace rather than a snapshot for pins by tag or branch")]
         end
-        version = Debian::PackageVersion.full(upstream, revision(target, package, upstream), target.codename)
-        kind = @own.version_of(deb, target) == version ? :published : :build
-        Decision.new(package: package.name, kind: kind, deb_name: deb, version: version, cause: cause).freeze
-      end
-
-      def revision(target, package, upstream)
-        @revisions.dig(target.to_s, package.name, upstream) || 1
+        Decision.new(package: package.name, kind: :build, deb_name: deb, cause: cause).freeze
       end
 
       def upstream(package)
@@ -243,6 +234,15 @@ module Relspec
 
           @notes << "gem #{package.name} needs #{dependency}, which the #{target.codename} archive lacks as #{name} " \
                     "(add it to gems:)"
+        end
+      end
+
+      # autoproj leaves out an optional OS dependency the distribution
+      # cannot provide; the package is built without it, which plan says.
+      def note_optional_missing(package, target)
+        package.os_dependencies_for(target.codename).optional_missing.each do |name|
+          @notes << "#{package.name} is built without its optional dependency #{name} on #{target.codename}: " \
+                    "the osdeps define no package for it there"
         end
       end
 

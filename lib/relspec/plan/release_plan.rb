@@ -5,20 +5,16 @@ module Relspec
     # The decisions for every target of a release, with what was read to make
     # them; immutable. Lock (the file) and the renderers read from it.
     class ReleasePlan
-      attr_reader :release, :targets, :unavailable, :packages, :release_digests, :warnings, :notes, :last_builds
+      attr_reader :release, :targets, :unavailable, :packages, :release_digests, :warnings, :notes
 
       # +targets+: Target => {package name => Decision}; +unavailable+:
       # Target => {package name => Cause} for the selected packages that
       # cannot exist there; +packages+: package name => source record;
       # +release_digests+: [ancestor, codename] => SHA256 of what the ancestor provides there (Inventory);
-      # +last_builds+: Target => {package name => {"version", "debian_digest"}}
-      # of packages not built now that an earlier lock recorded as built, so
-      # their revisions go on where they stopped if they are built again.
-      def initialize(release:, targets:, packages:, release_digests:, warnings:, notes:, unavailable: {}, last_builds: {})
+      def initialize(release:, targets:, packages:, release_digests:, warnings:, notes:, unavailable: {})
         @release = release
         @targets = targets.freeze
         @unavailable = targets.keys.to_h { |target| [target, unavailable.fetch(target, {}).freeze] }.freeze
-        @last_builds = last_builds.freeze
         @packages = packages.freeze
         @release_digests = release_digests.freeze
         @warnings = warnings.freeze
@@ -37,10 +33,10 @@ module Relspec
           unavailable: unavailable.fetch(target).size }
       end
 
-      # Returns the same plan with other decisions (compile settles versions).
-      def with_targets(targets, last_builds: self.last_builds)
+      # Returns the same plan with other decisions (Settlement gives versions).
+      def with_targets(targets)
         ReleasePlan.new(release: release, targets: targets, packages: packages, release_digests: release_digests,
-                        warnings: warnings, notes: notes, unavailable: unavailable, last_builds: last_builds)
+                        warnings: warnings, notes: notes, unavailable: unavailable)
       end
 
       def builds(target)

@@ -8,14 +8,15 @@ module Relspec
     # Renders a ReleasePlan for people: text for terminals, Markdown for pull
     # request comments, JSON for tools (the lock's content).
     class Report
-      def initialize(plan, spec_digest, targets: plan.targets.keys)
+      # +lock+: the Lock of +plan+ (the JSON form is its content).
+      def initialize(plan, lock, targets: plan.targets.keys)
         @plan = plan
-        @spec_digest = spec_digest
+        @lock = lock
         @targets = targets.sort_by(&:to_s)
       end
 
       def json
-        data = Lock.to_h(@plan, @spec_digest)
+        data = @lock.to_h
         data["targets"] = data["targets"].slice(*@targets.map(&:to_s))
         "#{JSON.pretty_generate(data)}\n"
       end
@@ -73,7 +74,7 @@ module Relspec
 
       def headline
         packages = @plan.packages.size
-        ancestors = Lock.ancestors(@plan).keys
+        ancestors = @lock.ancestors.keys
         "#{@plan.release}: #{packages} packages on #{@targets.size} targets; " \
           "ancestors: #{ancestors.empty? ? 'none' : ancestors.join(', ')}"
       end
@@ -126,7 +127,7 @@ module Relspec
 
       # The version without its ~codename, the same on every target.
       def short_version(decision)
-        decision.version.sub(/~[a-z0-9-]+\z/, "")
+        decision.version.to_s.sub(/~[a-z0-9-]+\z/, "")
       end
 
       def section(title, items, bullet: " ")

@@ -1,5 +1,7 @@
 # frozen_string_literal: true
 
+require_relative "../error"
+
 module Relspec
   module Plan
     # One distribution codename and architecture a release is built for.
@@ -10,6 +12,20 @@ module Relspec
           unless codename && arch && !codename.empty? && !arch.empty?
 
         new(codename, arch).freeze
+      end
+
+      # The targets a `--target codename/arch` option selects among +targets+
+      # (all of them when +text+ is nil); an unknown one is an Error.
+      def self.select(text, targets, release)
+        return targets if text.nil?
+
+        wanted = parse(text)
+        found = targets.find { |target| target == wanted }
+        raise Error, "#{text} is not a target of #{release} (#{targets.join(', ')})" unless found
+
+        [found]
+      rescue ArgumentError => e
+        raise Error, e.message
       end
 
       # Every target of an effective spec, sorted.

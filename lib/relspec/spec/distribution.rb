@@ -6,10 +6,13 @@ module Relspec
     # inherits Debian's package names, so it is keyed "ubuntu,debian") and the
     # labels autoproj matches against the running system.
     # +archive+: where the distribution's own packages can be read (a
-    # repository entry with components), or nil.
-    Distribution = Struct.new(:codename, :type, :labels, :archive, keyword_init: true) do
-      def self.define(codename, type, labels, archive: nil)
-        new(codename: codename, type: type, labels: labels.map(&:to_s).freeze, archive: archive&.freeze).freeze
+    # repository entry with components), or nil. +debhelper_compat+: the
+    # debhelper compatibility level generated debian/ folders use there (the
+    # highest its debhelper supports; docs/compile.md lists the sources).
+    Distribution = Struct.new(:codename, :type, :labels, :archive, :debhelper_compat, keyword_init: true) do
+      def self.define(codename, type, labels, archive: nil, debhelper_compat: DEFAULT_DEBHELPER_COMPAT)
+        new(codename: codename, type: type, labels: labels.map(&:to_s).freeze, archive: archive&.freeze,
+            debhelper_compat: debhelper_compat).freeze
       end
 
       def osdeps_type_key
@@ -26,21 +29,28 @@ module Relspec
       end
     end
 
+    # Distributions relspec does not know get the compat level of current
+    # debhelper unless their definition says otherwise.
+    DEFAULT_DEBHELPER_COMPAT = 13
+
     # The distributions Rock releases have targeted; specs may add or override
     # entries with `distributions:`.
     module Distributions
       TYPES = %w[ubuntu debian].freeze
 
+      # debhelper of each distribution (docs/compile.md): xenial 9.20160115,
+      # stretch 10.2.5, bionic 11.1.6, buster 12.1.1, focal 12.10,
+      # bullseye 13.3.4, jammy 13.6, bookworm 13.11.4, noble 13.14.1.
       BUILTIN = [
-        Distribution.define("xenial", "ubuntu", %w[16.04 xenial xerus default]),
-        Distribution.define("bionic", "ubuntu", %w[18.04 bionic beaver default]),
-        Distribution.define("focal", "ubuntu", %w[20.04 focal fossa default]),
-        Distribution.define("jammy", "ubuntu", %w[22.04 jammy jellyfish default]),
-        Distribution.define("noble", "ubuntu", %w[24.04 noble numbat default]),
-        Distribution.define("stretch", "debian", %w[9 stretch default]),
-        Distribution.define("buster", "debian", %w[10 buster default]),
-        Distribution.define("bullseye", "debian", %w[11 bullseye default]),
-        Distribution.define("bookworm", "debian", %w[12 bookworm default])
+        Distribution.define("xenial", "ubuntu", %w[16.04 xenial xerus default], debhelper_compat: 9),
+        Distribution.define("bionic", "ubuntu", %w[18.04 bionic beaver default], debhelper_compat: 11),
+        Distribution.define("focal", "ubuntu", %w[20.04 focal fossa default], debhelper_compat: 12),
+        Distribution.define("jammy", "ubuntu", %w[22.04 jammy jellyfish default], debhelper_compat: 13),
+        Distribution.define("noble", "ubuntu", %w[24.04 noble numbat default], debhelper_compat: 13),
+        Distribution.define("stretch", "debian", %w[9 stretch default], debhelper_compat: 10),
+        Distribution.define("buster", "debian", %w[10 buster default], debhelper_compat: 12),
+        Distribution.define("bullseye", "debian", %w[11 bullseye default], debhelper_compat: 13),
+        Distribution.define("bookworm", "debian", %w[12 bookworm default], debhelper_compat: 13)
       ].to_h { |d| [d.codename, d] }.freeze
 
       # Built-ins overlaid with a spec's own definitions ({codename =>
@@ -49,7 +59,9 @@ module Relspec
         own = (definitions || {}).to_h do |codename, definition|
           known = BUILTIN[codename]
           [codename, Distribution.define(codename, definition["type"] || known&.type,
-                                         definition["labels"] || known&.labels || [], archive: definition["archive"])]
+                                         definition["labels"] || known&.labels || [], archive: definition["archive"],
+                                         debhelper_compat: definition["debhelper_compat"] || known&.debhelper_compat ||
+                                                           DEFAULT_DEBHELPER_COMPAT)]
         end
         BUILTIN.merge(own).freeze
       end

@@ -7,6 +7,12 @@ module Relspec
     class ExternalRelease
       attr_reader :name, :declared_in
 
+      protected
+
+      attr_reader :entry
+
+      public
+
       def initialize(name, entry, declared_in)
         @name = name
         @entry = entry
@@ -24,6 +30,12 @@ module Relspec
 
       def value(key)
         @entry[key]
+      end
+
+      # Two declarations of one external release mean the same release only
+      # when they say the same thing.
+      def same_entry?(other)
+        other.is_a?(ExternalRelease) && other.entry == @entry
       end
 
       def location

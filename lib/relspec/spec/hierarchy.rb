@@ -36,10 +36,12 @@ module Relspec
       # next parent's, because it already holds what its ancestors hold.
       def ancestors
         order = []
+        seen = { root.name => true }
         walk = lambda do |node|
           node.parents.each do |parent|
-            next if order.include?(parent) || parent.equal?(root)
+            next if seen[parent.name] # a release is identified by its name
 
+            seen[parent.name] = true
             order << parent
             walk.call(parent)
           end
@@ -85,11 +87,25 @@ module Relspec
                  "remove the external entry or the spec file")
           return nil
         end
-        return @nodes[name] || Node.new(name: name, source: external, parents: [].freeze).freeze if external
+        return external_node(spec_file, name, external) if external
         return visit(name, found, chain) if found
 
         unknown_parent(spec_file, name)
         nil
+      end
+
+      # One node per external release name, however many specs declare it;
+      # declarations that disagree are an error.
+      def external_node(spec_file, name, external)
+        known = @nodes[name]
+        if known && !(known.external? && known.source.same_entry?(external))
+          where = known.external? ? known.source.declared_in.path : "specs/"
+          report(spec_file, name, "conflicting-external",
+                 "external release #{name.inspect} is declared differently here and in #{where}",
+                 "declare it the same way in both specs (or in one common ancestor)")
+          return nil
+        end
+        @nodes[name] ||= Node.new(name: name, source: external, parents: [].freeze).freeze
       end
 
       def externals(spec_file)

@@ -72,13 +72,16 @@ module Relspec
         optional(:type).filled(:string, included_in?: %w[ubuntu debian])
         optional(:labels).filled(:array).each(:str?)
         optional(:archive).value(:hash)
+        optional(:debhelper_compat).filled(:integer, gteq?: 9, lteq?: 14)
       end
 
       # Where the distribution's packages can be read (to prefer its ruby-*
       # packages over packaging gems): a repository plus its components.
+      # host: true reads this machine's apt lists instead (Apt::HostLists).
       ARCHIVE = Dry::Schema.JSON(parent: REPOSITORY) do
         config.validate_keys = true
         optional(:components).filled(:array).each(:str?)
+        optional(:host).value(:bool)
       end
 
       def self.keys(schema)

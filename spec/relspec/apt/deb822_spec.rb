@@ -29,6 +29,14 @@ RSpec.describe Relspec::Apt::Deb822 do
     end
   end
 
+  it "separates stanzas at a line of only spaces or tabs, in the C reader and the Ruby scanner alike" do
+    text = "Package: a\nVersion: 1\n \t\nPackage: b\nVersion: 2\n"
+    scanner = Relspec::Apt::PackagesScanner.new(text)
+    expected = [{ "Package" => "a", "Version" => "1" }, { "Package" => "b", "Version" => "2" }]
+    expect(scanner.each_in_ruby(%w[Package Version]).to_a).to eq(expected)
+    expect(scanner.each(%w[Package Version]).to_a).to eq(expected)
+  end
+
   it "is read by the C reader, compiled by bin/setup" do
     expect(Relspec::Apt::NativeReader.available?).to be(true)
   end

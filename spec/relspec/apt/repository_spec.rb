@@ -66,13 +66,53 @@ RSpec.describe Relspec::Apt::Repository do
     expect(second).to include("/dists/bionic/Release")
   end
 
-  it "verifies InRelease with a keyring, and refuses a bad signature or a foreign key" do
+  # A gpg key of the test's own: [gnupg home, exported keyring].
+  def signing_key
     home = File.join(@dir, "gnupg")
     Dir.mkdir(home, 0o700)
     system({ "GNUPGHOME" => home }, "gpg", "--batch", "--quiet", "--passphrase", "", "--quick-gen-key",
            "Test Repo <repo@example.org>", "ed25519", "sign", "never", exception: true, err: File::NULL)
     keyring = File.join(@dir, "keyring.gpg")
     File.binwrite(keyring, IO.popen({ "GNUPGHOME" => home }, %w[gpg --export], &:read))
+    [home, keyring]
+  end
+
+  it "refuses a signed Release of another distribution served under this one's name (a replay)" do
+    home, keyring = signing_key
+    path = build_repository(sign_with: "yes", gnupg_home: home)
+    FileUtils.cp(File.join(path, "dists", "buster", "InRelease"), File.join(path, "dists", "bionic", "InRelease"))
+    expect(error_of { reader(path, keyring: keyring).packages("bionic", "amd64") })
+      .to match(%r{dists/bionic: the Release file is of buster, not bionic})
+  end
+
+  it "refuses a signed Release whose Valid-Until has passed" do
+    home, keyring = signing_key
+    path = build_repository(sign_with: "yes", gnupg_home: home, valid_for: "1d")
+    expect(reader(path, keyring: keyring).release("bionic").valid_until).to be > Time.now
+    later = -> { Time.now + (3 * 86_400) }
+    expect(error_of { reader(path, keyring: keyring, clock: later).release("bionic") })
+      .to match(%r{dists/bionic: the Release file expired on \d{4}-\d\d-\d\d .* \(Valid-Until\)})
+  end
+
+  it "reads every member of a Packages.gz made of several gzip members" do
+    path = build_repository
+    ReleaseFileEditor.keep_only(path, "bionic", "main/binary-amd64", "main/binary-amd64/Packages.gz")
+    two = Zlib.gzip("Package: first\nVersion: 1.0\n\n") + Zlib.gzip("Package: second\nVersion: 2.0\n")
+    ReleaseFileEditor.replace_index(path, "bionic", "main/binary-amd64/Packages.gz", two)
+    expect(reader(path, trusted: true).packages("bionic", "amd64").entries.keys).to eq(%w[first second])
+  end
+
+  it "refuses an index Version that is not a Debian version, naming the stanza" do
+    path = build_repository
+    ReleaseFileEditor.keep_only(path, "bionic", "main/binary-amd64", "main/binary-amd64/Packages")
+    ReleaseFileEditor.replace_index(path, "bionic", "main/binary-amd64/Packages",
+                                    "Package: a\nVersion: 1.0\n\nPackage: b\nVersion: 1.0) evil\n")
+    expect(error_of { reader(path, trusted: true).packages("bionic", "amd64") })
+      .to match(%r{binary-amd64/Packages: malformed index: stanza 2 \(Package: b\) has an invalid Version "1.0\) evil"})
+  end
+
+  it "verifies InRelease with a keyring, and refuses a bad signature or a foreign key" do
+    home, keyring = signing_key
     path = build_repository(sign_with: "yes", gnupg_home: home)
     expect(reader(path, keyring: keyring).packages("bionic", "amd64").size).to eq(2)
 
@@ -94,6 +134,18 @@ RSpec.describe Relspec::Apt::Repository do
     File.binwrite(File.join(path, "dists", "bionic", "main", "binary-amd64", "Packages.gz"), Zlib.gzip("Package: evil\n"))
     expect(error_of { reader(path, trusted: true).packages("bionic", "amd64") })
       .to match(%r{repo/dists/bionic/main/binary-amd64/Packages.gz does not match the SHA256 of the Release file})
+  end
+
+  it "reads the next index the Release file lists when the first is missing, as on mirrors that drop Packages.xz" do
+    path = build_repository
+    index = File.join(path, "dists", "bionic", "main", "binary-amd64")
+    # reprepro lists Packages.gz and Packages; the compressed one goes away
+    expect(File.read(File.join(path, "dists", "bionic", "Release"))).to include("main/binary-amd64/Packages.gz")
+    File.delete(File.join(index, "Packages.gz"))
+    expect(reader(path, trusted: true).packages("bionic", "amd64").entries.keys).to include("rock-x-base-types")
+    File.delete(File.join(index, "Packages"))
+    expect(error_of { reader(path, trusted: true).packages("bionic", "amd64") })
+      .to match(%r{binary-amd64/Packages.gz is listed in the Release file but missing})
   end
 
   it "refuses a truncated .gz index" do

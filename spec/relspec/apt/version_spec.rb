@@ -39,4 +39,24 @@ RSpec.describe Relspec::Apt::Version do
     expect { described_class.new("") }.to raise_error(ArgumentError)
     expect { described_class.new("1.0 2") }.to raise_error(ArgumentError)
   end
+
+  it "hashes equal versions alike, so they meet in a Hash" do
+    equal = [%w[1.0 1.00], %w[1.0 1.0-0], %w[1.0 1.], %w[1a0 1a], %w[2:1.01-1 2:1.1-01]]
+    equal.each do |left, right|
+      a = described_class.new(left)
+      b = described_class.new(right)
+      expect(a).to eql(b)
+      expect(a.hash).to eq(b.hash), "#{left} and #{right}"
+      expect({ a => true }).to have_key(b)
+    end
+    expect(described_class.new("1.0~")).not_to eql(described_class.new("1.0"))
+    expect(described_class.new("1a0b").hash).not_to eq(described_class.new("1ab").hash)
+  end
+
+  it "accepts only what dpkg accepts as a version" do
+    %w[1.0 1:2.0-1 2.0-1-2 0.9.20200605.164500-1~bionic 1.0+dfsg~rc1].each { |text| expect(described_class.valid?(text)).to be(true), text }
+    ["abc", "1.0-", "1:a", "1.0 x", "a:1.0", "1.0)", ":1.0"].each do |text|
+      expect(described_class.valid?(text)).to be(false), text
+    end
+  end
 end

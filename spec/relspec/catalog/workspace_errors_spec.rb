@@ -37,6 +37,13 @@ RSpec.describe "relspec catalog on broken workspaces" do
                    "#{@base}: error[not-a-workspace]: #{@base} is not an autoproj workspace (no .autoproj/config.yml)")
   end
 
+  it "names .autoproj/config.yml and the place when it is malformed YAML" do
+    root = broken_workspace { |b| File.write(File.join(b.root, ".autoproj", "config.yml"), "source: src\n  bad: [\n") }
+    expect_failure(relspec("catalog", "export", root, "--targets", "bionic"),
+                   "#{root}/.autoproj/config.yml:2:6: error[workspace-config]: malformed .autoproj/config.yml: " \
+                   "mapping values are not allowed in this context")
+  end
+
   it "says when a package set is missing" do
     root = broken_workspace { |b| FileUtils.rm_rf(File.join(b.root, "package_sets")) }
     expect_failure(relspec("catalog", "export", root, "--targets", "bionic"),

@@ -75,8 +75,8 @@ RSpec.describe "compiling Ruby gemspec and oroGen packages" do
     Dir.mktmpdir("relspec-ruby") do |work|
       deb = build("rock-types-ruby-tools-rubylib", work)
       prefix = "./opt/rock/types/rock-types-ruby-tools-rubylib"
-      expect(contents(deb)).to include("#{prefix}/lib/ruby/gems/gems/rubylib-0.4.0/lib/rubylib.rb",
-                                       "#{prefix}/lib/ruby/gems/specifications/rubylib-0.4.0.gemspec",
+      expect(contents(deb)).to include("#{prefix}/gems/gems/rubylib-0.4.0/lib/rubylib.rb",
+                                       "#{prefix}/gems/specifications/rubylib-0.4.0.gemspec",
                                        "#{prefix}/bin/rubylib")
       expect(contents(deb)).not_to include("rubylib-0.4.0/debian/")
       # the throwaway repository and the built gem go away with `clean`

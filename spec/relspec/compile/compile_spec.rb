@@ -76,7 +76,8 @@ RSpec.describe "relspec compile" do
   it "declares build dependencies on what is built here and inherited, with versions" do
     control = File.read(dsc("out1", "buster-amd64", "drivers/iodrivers_base"))
     build_depends = control[/^Build-Depends: (.*)$/, 1]
-    expect(build_depends).to include("debhelper-compat (= 13)", "cmake",
+    # buster's debhelper is 12.1.1: compat 13 does not exist there
+    expect(build_depends).to include("debhelper-compat (= 12)", "cmake",
                                      "rock-child-base-types (>= #{@fixture.version('base/types', 'buster')})",
                                      "libboost1.67-all-dev")
     expect(build_depends).not_to include("build-essential")

@@ -33,7 +33,8 @@ RSpec.describe "relspec compile with gems" do
       distributions:
         bionic: { archive: { path: ../repos/ubuntu, trusted: true } }
     YAML
-    @compile = relspec("compile", "specs/gemrel.yml", "--out", "out", chdir: @dir)
+    # the stand-in bionic archive holds only ruby-* packages: no availability check
+    @compile = relspec("compile", "specs/gemrel.yml", "--out", "out", "--no-check", chdir: @dir)
   end
 
   after(:all) do
@@ -135,10 +136,10 @@ RSpec.describe "relspec compile with gems" do
       system("dpkg-deb", "-x", deb, root, exception: true)
       system("dpkg-deb", "-x", Dir.glob(File.join(work, "#{portile}_2.4.0-1~buster_all.deb")).first, root, exception: true)
       prefix = File.join(root, "opt/rock/gemrel", nokogiri)
-      expect(File).to exist(File.join(prefix, "lib/ruby/gems/gems/nokogiri-1.10.10/lib/nokogiri.rb"))
-      expect(Dir.glob(File.join(prefix, "lib/ruby/gems/**/nokogiri_ext.so"))).not_to be_empty
+      expect(File).to exist(File.join(prefix, "gems/gems/nokogiri-1.10.10/lib/nokogiri.rb"))
+      expect(Dir.glob(File.join(prefix, "gems/**/nokogiri_ext.so"))).not_to be_empty
       # with both gems' env.sh applied, as a user of the release would run it
-      gem_path = [prefix, File.join(root, "opt/rock/gemrel", portile)].map { |dir| File.join(dir, "lib/ruby/gems") }
+      gem_path = [prefix, File.join(root, "opt/rock/gemrel", portile)].map { |dir| File.join(dir, "gems") }
       env = OUTSIDE_BUNDLE.merge("GEM_PATH" => gem_path.join(":"))
       output, status = Open3.capture2e(env, "ruby", "-e", 'require "nokogiri/nokogiri_ext"; print NokogiriExt.name')
       expect([output, status.success?]).to eq(["NokogiriExt", true])
@@ -171,7 +172,7 @@ RSpec.describe "relspec compile with gems" do
     expect(run.stderr).to include("missing from the repository: buster/amd64 mini_portile2")
     expect(run.stderr).not_to include("bionic/amd64 mini_portile2")
   ensure
-    relspec("compile", "specs/gemrel.yml", "--out", "out", chdir: @dir) # the full osdeps files again
+    relspec("compile", "specs/gemrel.yml", "--out", "out", "--no-check", chdir: @dir) # the full osdeps files again
   end
 
   it "refuses a .gem that differs from the one the lock recorded for that version" do
@@ -194,7 +195,7 @@ RSpec.describe "relspec compile with gems" do
   end
 
   it "writes nothing on a second compile" do
-    again = relspec("compile", "specs/gemrel.yml", "--out", "out", chdir: @dir)
+    again = relspec("compile", "specs/gemrel.yml", "--out", "out", "--no-check", chdir: @dir)
     expect(again.exit_code).to eq(0), again.stderr
     expect(again.stdout).to eq("gemrel: nothing changed (11 source packages up to date)\n")
   end

@@ -45,6 +45,8 @@ RSpec.describe "relspec compile with overlays" do
     expect(compile.exit_code).to eq(0)
     others = Dir.glob(File.join(@dir, "out", "child", "bionic-amd64", "*", "*")).reject { |path| path.start_with?(orocos_dir) }
     mtimes = others.to_h { |path| [path, File.mtime(path)] }
+    orig = -> { Digest::SHA256.file(Dir.glob(File.join(orocos_dir, "*.orig.tar.gz")).first).hexdigest }
+    upstream_orig = orig.call
     overlay("tools/orocos.rb", "files/lib/extra.rb", "PREFIX = \"@RELSPEC_INSTALL_DIR@\"\n")
     overlay("tools/orocos.rb", "patches/01-readme.patch", patch)
     overlay("tools/orocos.rb", "debian/README.Debian", "Release @RELSPEC_RELEASE@, package @RELSPEC_PACKAGE@.\n")
@@ -53,6 +55,8 @@ RSpec.describe "relspec compile with overlays" do
     expect(run.stdout.lines.grep(/^wrote /)).to eq(["wrote out/child/bionic-amd64/rock-child-ruby-tools-orocos.rb\n"])
     expect(others.to_h { |path| [path, File.mtime(path)] }).to eq(mtimes)
     expect(Dir.children(orocos_dir).grep(/\.dsc\z/).first).to end_with("-2~bionic.dsc")
+    # the overlay's files travel in debian/: the orig tarball of the upstream version is unchanged
+    expect(orig.call).to eq(upstream_orig)
 
     Dir.mktmpdir do |work|
       output, status = Open3.capture2e("dpkg-source", "-x", Dir.glob(File.join(orocos_dir, "*.dsc")).first, "tree", chdir: work)
@@ -60,7 +64,9 @@ RSpec.describe "relspec compile with overlays" do
       tree = File.join(work, "tree")
       expect(File.read(File.join(tree, "lib", "extra.rb"))).to eq("PREFIX = \"/opt/rock/child/rock-child-ruby-tools-orocos.rb\"\n")
       expect(File.read(File.join(tree, "README"))).to end_with("patched by an overlay\n")
-      expect(File.read(File.join(tree, "debian", "patches", "series"))).to eq("01-readme.patch\n")
+      expect(File.read(File.join(tree, "debian", "patches", "series"))).to eq("relspec-overlay-files.patch\n01-readme.patch\n")
+      expect(File.read(File.join(tree, "debian", "patches", "relspec-overlay-files.patch")))
+        .to include("--- /dev/null\n+++ b/lib/extra.rb\n@@ -0,0 +1,1 @@\n+PREFIX = ")
       expect(File.read(File.join(tree, "debian", "patches", "01-readme.patch"))).to start_with("Description: 01-readme.patch")
       expect(File.read(File.join(tree, "debian", "README.Debian"))).to eq("Release child, package rock-child-ruby-tools-orocos.rb.\n")
     end
@@ -120,7 +126,8 @@ RSpec.describe "the lock between plan and compile" do
       expect(relspec("compile", "specs/rel.yml", "--out", "out", chdir: dir).exit_code).to eq(0)
       lock = File.join(dir, "releases", "rel", "lock.yml")
       digests = File.read(lock).scan(/debian_digest: (\h+)/).flatten
-      expect(digests.size).to eq(1)
+      expect(digests.size).to eq(2) # the decision's and the history's
+      expect(digests.uniq.size).to eq(1)
       # from the spec's folder: the lock is still the project's
       expect(relspec("plan", "rel.yml", "--write", chdir: File.join(dir, "specs")).exit_code).to eq(0)
       expect(File.read(lock).scan(/debian_digest: (\h+)/).flatten).to eq(digests)
@@ -157,11 +164,13 @@ RSpec.describe "the lock between plan and compile" do
       first = lock.call.dig("targets", "bionic/amd64", "base/types")
       expect(first["version"]).to end_with("-1~bionic")
 
-      # the blacklist goes: base/types is inherited, and the lock keeps its last build
+      # the blacklist goes: base/types is inherited, and the lock's history keeps its last build
       fixture.spec("child", "parent: parent\n", workspace: :checkouts)
       expect(relspec("plan", "specs/child.yml", "--write", chdir: dir).exit_code).to eq(0)
-      expect(lock.call.dig("targets", "bionic/amd64", "base/types"))
-        .to include("decision" => "inherit", "last_build" => first.slice("version", "debian_digest"))
+      expect(lock.call.dig("targets", "bionic/amd64", "base/types")).to include("decision" => "inherit")
+      upstream = first["version"].delete_suffix("-1~bionic")
+      expect(lock.call.dig("history", "bionic/amd64", "base/types", upstream))
+        .to eq("revision" => 1, "debian_digest" => first["debian_digest"])
 
       # built again with another debian/: the next revision, never a second, different -1
       fixture.spec("child", blacklisted, workspace: :checkouts)

@@ -63,4 +63,19 @@ RSpec.describe Relspec::Debian::OrigTarball do
     expect(names.grep(/\.git/)).to be_empty
     expect(listing(first)[1]).to start_with("-rw-r--r-- 0/0")
   end
+
+  it "keeps symbolic links' targets, tracked build/ folders and .gitignore of a whole tree (gems)" do
+    tree = File.join(@dir, "gem")
+    FileUtils.mkdir_p(File.join(tree, "src", "inc"))
+    FileUtils.mkdir_p(File.join(tree, "build"))
+    File.write(File.join(tree, "src", "inc", "a.h"), "int a;\n")
+    File.write(File.join(tree, "build", "extconf.rb"), "# part of the gem\n")
+    File.write(File.join(tree, ".gitignore"), "*.o\n")
+    File.symlink("src/inc", File.join(tree, "include"))
+    path = File.join(@dir, "gem.tar.gz")
+    described_class.write(path, checkout: tree, commit: nil, prefix: "pkg-1.0", mtime: Time.utc(2020), everything: true)
+    entries = listing(path)
+    expect(entries.grep(/ pkg-1\.0\/include -> /).first).to end_with("pkg-1.0/include -> src/inc\n")
+    expect(entries.map { |line| line.split.last }).to include("pkg-1.0/build/extconf.rb", "pkg-1.0/.gitignore")
+  end
 end

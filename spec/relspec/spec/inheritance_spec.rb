@@ -142,6 +142,20 @@ RSpec.describe "spec inheritance" do
     expect(spec.origin("targets").to_s).to match(/child\.yml:\d+:\d+/)
   end
 
+  it "identifies an external release declared by two specs of a diamond by its name" do
+    external = "external: { ext: { path: /srv/ext, trusted: true } }\n"
+    files = { "a" => "release: a\nparent: ext\n#{external}targets: { bionic: [amd64] }\n",
+              "b" => "release: b\nparent: ext\n#{external}targets: { bionic: [amd64] }\n",
+              "child" => "release: child\nparent: [a, b]\n" }
+    expect(effective(files, "child").ancestors).to eq(%w[a ext b])
+    files["b"] = files["b"].sub("/srv/ext", "/srv/other")
+    with_specs(files) do |dir|
+      errors = resolve(dir, "child").errors
+      expect(errors.map(&:rule)).to eq(["conflicting-external"])
+      expect(errors.first.message).to match(/external release "ext" is declared differently here and in .*a\.yml/)
+    end
+  end
+
   it "does not follow parents of an external release (it has none)" do
     child = "release: child\nparent: [ext, root]\nexternal: { ext: { path: /srv/ext, trusted: true } }\n"
     spec = effective({ "child" => child, "root" => root }, "child")

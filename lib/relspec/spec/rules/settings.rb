@@ -106,10 +106,19 @@ module Relspec
           end
         end
 
+        # host: true (this machine's apt lists) stands instead of a location.
         def self.archive(file, codename, archive)
           return [] unless archive.is_a?(Hash)
 
-          Repository.check(file, ["distributions", codename, "archive"], archive, "the archive of #{codename}")
+          path = ["distributions", codename, "archive"]
+          return Repository.check(file, path, archive, "the archive of #{codename}") unless archive["host"] == true
+
+          located = %w[path url keyring trusted].select { |key| archive.key?(key) }
+          return [] if located.empty?
+
+          [Diagnostic.error("archive-host", "the archive of #{codename} sets host: true and #{located.join(', ')}",
+                            location: file.key_location(path + ["host"]),
+                            hint: "host: true reads this machine's apt lists; drop #{located.join(', ')} or host")]
         end
 
         # A URL (http, https, file) or a folder of .gem files, relative to the spec.

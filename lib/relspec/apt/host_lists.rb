@@ -1,0 +1,104 @@
+# frozen_string_literal: true
+
+require "open3"
+require "English"
+require_relative "repository"
+
+module Relspec
+  module Apt
+    # The apt lists of the machine relspec runs on (/var/lib/apt/lists after
+    # `apt-get update`), read like a Repository: apt itself says which index
+    # files it has (`apt-get indextargets`) and decompresses them
+    # (`apt-helper cat-file`, whatever compression apt chose to keep them in,
+    # e.g. lz4). apt verified the InRelease signatures when it downloaded
+    # them; the index text is verified here against the SHA256 that the
+    # stored InRelease gives for the uncompressed index.
+    class HostLists
+      APT_HELPER = "/usr/lib/apt/apt-helper"
+      FORMAT = "$(RELEASE)\t$(COMPONENT)\t$(ARCHITECTURE)\t$(METAKEY)\t$(FILENAME)"
+
+      # One downloaded Packages index.
+      Target = Struct.new(:suite, :component, :arch, :meta_key, :filename)
+
+      def url
+        "this machine's apt lists"
+      end
+
+      def packages(codename, arch, component: "main")
+        PackageIndex.parse(packages_text(codename, arch, component: component))
+      rescue Deb822::ParseError, ArgumentError, PackageIndex::Invalid => e
+        raise Repository::Error, "#{url} (#{codename}/#{component}/binary-#{arch}): malformed index: #{e.message}"
+      end
+
+      def packages_text(codename, arch, component: "main")
+        target = target_for(codename, arch, component)
+        text = read_index(target.filename)
+        checksum = release_of(target).checksum(target.meta_key)
+        raise Repository::Error, "#{target.filename}: its InRelease lists no #{target.meta_key}" unless checksum
+        unless text.bytesize == checksum.size && Digest::SHA256.hexdigest(text) == checksum.sha256
+          raise Repository::Error, "#{target.filename} does not match the SHA256 of its InRelease: run apt-get update"
+        end
+
+        text
+      end
+
+      def index_digest(codename, arch, component: "main")
+        target = target_for(codename, arch, component)
+        checksum = release_of(target).checksum(target.meta_key)
+        raise Repository::Error, "#{target.filename}: its InRelease lists no #{target.meta_key}" unless checksum
+
+        checksum.sha256
+      end
+
+      private
+
+      def target_for(codename, arch, component)
+        found = targets.find { |t| t.suite == codename && t.arch == arch && t.component == component }
+        return found if found
+
+        raise Repository::Missing, "#{url} have no #{codename} #{component} #{arch} Packages index " \
+                                   "(configure it in /etc/apt/sources.list.d and run apt-get update)"
+      end
+
+      def targets
+        @targets ||= run("apt-get", "indextargets", "--format", FORMAT, "Identifier: Packages").lines.filter_map do |line|
+          suite, component, arch, meta_key, filename = line.chomp.split("\t")
+          filename && File.file?(filename) ? Target.new(suite, component, arch, meta_key, filename).freeze : nil
+        end
+      end
+
+      # The InRelease stored beside the index: same file name up to the
+      # meta key, which apt writes with "_" for "/".
+      def release_of(target)
+        @releases ||= {}
+        base = target.filename.sub(/_#{Regexp.escape(target.meta_key.tr('/', '_'))}(\.[a-z0-9]+)?\z/, "_")
+        @releases[base] ||= begin
+          bytes = File.binread("#{base}InRelease")
+          ReleaseFile.parse(Signature.unarmor(bytes).force_encoding(Encoding::UTF_8), raw: bytes)
+        rescue SystemCallError => e
+          raise Repository::Error, "#{url}: cannot read the InRelease of #{target.filename}: #{e.message}"
+        end
+      end
+
+      # A pipe read straight into one String (capture3's threads cost twice
+      # as much on a 50 MB index).
+      def read_index(filename)
+        text = IO.popen([APT_HELPER, "cat-file", filename], "rb", err: File::NULL, &:read)
+        raise Repository::Error, "#{url}: apt-helper cannot read #{filename}" unless $CHILD_STATUS.success?
+
+        text
+      rescue SystemCallError => e
+        raise Repository::Error, "#{url}: cannot run #{APT_HELPER}: #{e.message}"
+      end
+
+      def run(*command)
+        out, err, status = Open3.capture3(*command, binmode: true)
+        raise Repository::Error, "#{url}: #{command.first(2).join(' ')} failed: #{err.strip}" unless status.success?
+
+        out
+      rescue SystemCallError => e
+        raise Repository::Error, "#{url}: cannot run #{command.first}: #{e.message}"
+      end
+    end
+  end
+end

@@ -1,0 +1,52 @@
+# frozen_string_literal: true
+
+require_relative "error"
+require_relative "apt/cache"
+require_relative "availability/requirements"
+require_relative "availability/sources"
+require_relative "availability/check"
+
+module Relspec
+  # OS dependency availability (DESIGN §8, §9; docs/check.md): does every
+  # Debian package the release's packages build- or run-depend on exist on
+  # every target? Two entry points: `check` (relspec check) and `guard`, the
+  # one commands that build run before doing anything (compile; build).
+  module Availability
+    # Raised by guard: a relation is missing on a target, or a source failed.
+    class MissingDependencies < Error
+      attr_reader :report
+
+      def initialize(report)
+        @report = report
+        super("OS dependencies are missing on the release's targets, nothing was written:\n" \
+              "#{report.text.chomp}\n(see `relspec check`; --no-check skips this check)")
+      end
+    end
+
+    # The check of a planned release (+planned+: Plan::Result). +mode+:
+    # auto, apt or launchpad (Sources); +launchpad+: a LaunchpadClient, nil
+    # to take Launchpad answers from the cache only; +only+: targets to check.
+    # +launchpad_base+: whose cached answers count when +launchpad+ is nil.
+    def self.check(planned, mode: "auto", launchpad: nil, only: nil, timeout: 10,
+                   concurrency: LaunchpadSource::CONCURRENCY, launchpad_base: nil)
+      launchpad_base = launchpad&.base || launchpad_base || LaunchpadClient::DEFAULT_BASE
+      resolution = planned.resolution
+      sources = Sources.new(resolution.effective.distributions, mode: mode, spec_dir: File.dirname(resolution.spec_file.path),
+                                                                launchpad: launchpad, fetcher_options: { timeout: timeout },
+                                                                apt_cache: Apt::Cache.new(Apt::Cache.default_dir),
+                                                                concurrency: concurrency, launchpad_base: launchpad_base)
+      Check.run(resolution.effective.release, Requirements.of(planned, only: only), sources)
+    end
+
+    # The same check from what is at hand: apt archives as configured (their
+    # indices cached by checksum), Launchpad only from its answer cache, never
+    # asking the network. Returns the Report (its #unchecked targets deserve
+    # a note); raises MissingDependencies when the release must not be built.
+    def self.guard(planned, timeout: 10, launchpad_base: LaunchpadClient::DEFAULT_BASE)
+      report = check(planned, timeout: timeout, launchpad_base: launchpad_base)
+      raise MissingDependencies, report if report.failed?
+
+      report
+    end
+  end
+end

@@ -1,0 +1,162 @@
+# frozen_string_literal: true
+
+require "json"
+require "time"
+require "net/http"
+require "openssl"
+require "uri"
+require_relative "../error"
+
+module Relspec
+  module Availability
+    # A small client of Launchpad's REST web service (anonymous, read-only,
+    # Net::HTTP + JSON): the published binaries of Ubuntu's primary archive,
+    # by `Archive.getPublishedBinaries`, following `next_collection_link`
+    # from page to page. Answers that may pass (5xx, 429, timeouts, refused
+    # connections) are retried a bounded number of times with exponential
+    # backoff, honouring Retry-After; every request is counted.
+    class LaunchpadClient
+      DEFAULT_BASE = "https://api.launchpad.net/1.0"
+      TIMEOUT = 10
+      RETRIES = 4            # attempts per page, the first included
+      BACKOFF = 0.5          # seconds before the 2nd attempt; doubles after
+      MAX_RETRY_AFTER = 60   # a server asking for a longer pause is a failure
+      MAX_PAGES = 50         # a collection longer than this is not what we asked for
+
+      # The service cannot answer (after the retries); the message says why.
+      class Failure < Relspec::Error; end
+
+      # Launchpad knows no such series or architecture (404 on the query).
+      class UnknownSeries < Failure; end
+
+      attr_reader :base
+
+      # +sleeper+ waits between attempts (tests pass one that records).
+      def initialize(base: DEFAULT_BASE, timeout: TIMEOUT, retries: RETRIES, backoff: BACKOFF,
+                     sleeper: ->(seconds) { sleep(seconds) })
+        @base = base.to_s.chomp("/")
+        @timeout = timeout
+        @retries = retries
+        @backoff = backoff
+        @sleeper = sleeper
+        @requests = 0
+        @count = Mutex.new
+      end
+
+      # HTTP requests sent so far (retries and pages included).
+      def requests
+        @count.synchronize { @requests }
+      end
+
+      # The entries (Hashes in Launchpad's binary_package_publishing_history
+      # shape) of the binaries published as +name+ in +series+/+arch+;
+      # +exact+ false matches names containing +name+ (for hints).
+      def published_binaries(name, series, arch, exact: true)
+        url = query_url(name, series, arch, exact)
+        entries = []
+        MAX_PAGES.times do
+          page = get_json(url, "#{series}/#{arch}")
+          entries.concat(Array(page["entries"]))
+          url = page["next_collection_link"]
+          return entries unless url
+        end
+        raise Failure, "Launchpad: more than #{MAX_PAGES} pages for #{name} on #{series}/#{arch}"
+      end
+
+      private
+
+      def query_url(name, series, arch, exact)
+        query = URI.encode_www_form("ws.op" => "getPublishedBinaries", "binary_name" => name,
+                                    "exact_match" => exact.to_s, "status" => "Published",
+                                    "distro_arch_series" => "#{@base}/ubuntu/#{series}/#{arch}")
+        "#{@base}/ubuntu/+archive/primary?#{query}"
+      end
+
+      # A retryable answer, with the pause the server asked for (or nil).
+      class Retryable < StandardError
+        attr_reader :retry_after
+
+        def initialize(message, retry_after = nil)
+          super(message)
+          @retry_after = retry_after
+        end
+      end
+
+      def get_json(url, where)
+        attempt = 0
+        begin
+          attempt += 1
+          parse(get(URI(url), where), url)
+        rescue Net::OpenTimeout, Net::ReadTimeout, SystemCallError, SocketError, IOError, Retryable => e
+          raise Failure, "Launchpad: #{url}: #{describe(e)} (after #{attempt} attempts)" if attempt >= @retries
+
+          @sleeper.call(pause(e, attempt, url))
+          retry
+        rescue OpenSSL::SSL::SSLError, Net::HTTPBadResponse, Net::ProtocolError, URI::InvalidURIError => e
+          raise Failure, "Launchpad: #{url}: #{e.message}"
+        end
+      end
+
+      def pause(error, attempt, url)
+        wait = error.is_a?(Retryable) ? error.retry_after : nil
+        return @backoff * (2**(attempt - 1)) unless wait
+        raise Failure, "Launchpad: #{url}: asked to wait #{wait} s (more than #{MAX_RETRY_AFTER})" if wait > MAX_RETRY_AFTER
+
+        wait
+      end
+
+      def get(uri, where)
+        raise Failure, "Launchpad: #{uri} is not an http(s) URL" unless %w[http https].include?(uri.scheme)
+
+        @count.synchronize { @requests += 1 }
+        http = Net::HTTP.new(uri.host, uri.port)
+        http.use_ssl = uri.scheme == "https"
+        http.open_timeout = http.read_timeout = http.ssl_timeout = @timeout
+        http.max_retries = 0 # Net::HTTP would silently resend a timed-out GET; the retries are counted here
+        http.start do
+          request = Net::HTTP::Get.new(uri)
+          request["Accept"] = "application/json"
+          answer(http.request(request), uri, where)
+        end
+      end
+
+      def answer(response, uri, where)
+        case response
+        when Net::HTTPSuccess then response.body
+        when Net::HTTPNotFound, Net::HTTPBadRequest
+          raise UnknownSeries, "Launchpad has no Ubuntu series/architecture #{where} (#{uri.host}: HTTP #{response.code})"
+        when Net::HTTPTooManyRequests, Net::HTTPServerError
+          raise Retryable.new("HTTP #{response.code} #{response.message}", retry_after(response["Retry-After"]))
+        else raise Failure, "Launchpad: #{uri}: HTTP #{response.code} #{response.message}"
+        end
+      end
+
+      # Seconds (the form Launchpad and most services send); an HTTP date
+      # is honoured too.
+      def retry_after(value)
+        return nil if value.nil? || value.strip.empty?
+        return Integer(value.strip, 10) if value.strip.match?(/\A\d+\z/)
+
+        [(Time.httpdate(value) - Time.now).ceil, 0].max
+      rescue ArgumentError
+        nil
+      end
+
+      def parse(body, url)
+        data = JSON.parse(body)
+        raise Failure, "Launchpad: #{url}: the answer is not a collection" unless data.is_a?(Hash) && data.key?("entries")
+
+        data
+      rescue JSON::ParserError => e
+        raise Failure, "Launchpad: #{url}: the answer is not JSON (#{e.message[0, 80]})"
+      end
+
+      def describe(error)
+        case error
+        when Net::OpenTimeout, Net::ReadTimeout then "no answer within #{@timeout} s"
+        else error.message
+        end
+      end
+    end
+  end
+end

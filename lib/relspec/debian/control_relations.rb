@@ -1,0 +1,56 @@
+# frozen_string_literal: true
+
+require_relative "naming"
+
+module Relspec
+  module Debian
+    # The relationship fields of a generated debian/control: Build-Depends
+    # and Depends of one package, from its build type, its OS dependencies
+    # (apt names and distribution gems) and the relations to other Rock
+    # packages. DebianDir writes them; the availability check (relspec check)
+    # asks for the same lists without the Rock packages, so that what is
+    # checked is exactly what the builder will ask apt for.
+    module ControlRelations
+      BUILD_TOOLS = { "cmake" => ["cmake"], "orogen" => ["cmake"], "autotools" => %w[autoconf automake libtool],
+                      "ruby" => %w[ruby git], "gem" => ["ruby"], "import" => [], "archive" => [], "meta" => [] }.freeze
+
+      # build-essential is implied for every build (and Policy forbids listing it).
+      IMPLIED = %w[build-essential].freeze
+
+      # Build tools autoproj adds as OS dependencies of every cmake or
+      # autotools package; a built package does not need them to run.
+      BUILD_ONLY = %w[cmake autoconf automake libtool pkg-config ruby-dev].freeze
+
+      DEBHELPER = "debhelper-compat (= 13)"
+
+      module_function
+
+      # The distribution's ruby-<gem> packages for the gems of an
+      # OsDependencies that the release does not package itself
+      # (+release_gems+: the names it packages).
+      def distribution_gems(os_dependencies, release_gems)
+        (os_dependencies.gems.map { |gem| Naming.gem_name(gem) } - release_gems).map { |gem| Naming.distribution_gem(gem) }
+      end
+
+      # The OS part of the relations: apt names, then distribution gems.
+      def os_relations(apt, distribution_gems)
+        (apt - IMPLIED) + distribution_gems
+      end
+
+      # +own+: relations to Rock packages ("name (>= version)"), written first.
+      # +debhelper+: the relation naming the target's debhelper compat level.
+      def build_depends(build_type, own, os, debhelper: DEBHELPER)
+        return [debhelper] if build_type == "meta"
+
+        ([debhelper] + BUILD_TOOLS.fetch(build_type, []) + own + os).uniq
+      end
+
+      # +architecture+: "any" adds the shlibs substitution variable.
+      def depends(build_type, architecture, own, os)
+        base = architecture == "any" ? ["${shlibs:Depends}", "${misc:Depends}"] : ["${misc:Depends}"]
+        base += ["ruby"] if %w[ruby gem].include?(build_type)
+        (base + ((own + os) - BUILD_ONLY)).uniq
+      end
+    end
+  end
+end

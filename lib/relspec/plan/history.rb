@@ -1,0 +1,62 @@
+# frozen_string_literal: true
+
+module Relspec
+  module Plan
+    # Every build a release has made, per target and package and upstream
+    # version: the last revision given and the digest of the debian/ it was
+    # made from. Kept in the lock whatever the current selection, so that a
+    # package that leaves the release and comes back goes on from its last
+    # revision, and an upstream version built again (a pin moved back) never
+    # reuses a revision for other bytes. Immutable.
+    class History
+      Build = Struct.new(:revision, :debian_digest, keyword_init: true)
+
+      EMPTY = {}.freeze
+
+      # +builds+: "codename/arch" => package => upstream => Build
+      def initialize(builds = {})
+        @builds = builds.transform_values { |packages| packages.transform_values(&:freeze).freeze }.freeze
+        freeze
+      end
+
+      def self.empty
+        new({})
+      end
+
+      # The Build recorded for this upstream version, or nil.
+      def build(target, package, upstream)
+        @builds.dig(target.to_s, package, upstream)
+      end
+
+      # A history that also records +version+ (a PackageVersion) of
+      # +package+ made from +debian_digest+.
+      def with(target, package, version, debian_digest)
+        key = target.to_s
+        packages = @builds.fetch(key, EMPTY)
+        upstreams = packages.fetch(package, EMPTY).merge(
+          version.upstream => Build.new(revision: version.revision, debian_digest: debian_digest).freeze
+        )
+        History.new(@builds.merge(key => packages.merge(package => upstreams.freeze)))
+      end
+
+      def size
+        @builds.values.sum { |packages| packages.values.sum(&:size) }
+      end
+
+      def empty?
+        size.zero?
+      end
+
+      # Sorted plain data for the lock.
+      def to_h
+        @builds.sort.to_h do |target, packages|
+          [target, packages.sort.to_h do |package, upstreams|
+            [package, upstreams.sort_by { |upstream, _| Apt::Version.parse(upstream) }.to_h do |upstream, build|
+              [upstream, { "revision" => build.revision, "debian_digest" => build.debian_digest }]
+            end]
+          end]
+        end
+      end
+    end
+  end
+end

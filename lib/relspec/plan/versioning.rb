@@ -1,0 +1,52 @@
+# frozen_string_literal: true
+
+require_relative "history"
+require_relative "../debian/package_version"
+
+module Relspec
+  module Plan
+    # The one place that decides the version of a package built here and
+    # whether the release's repository already holds it (DESIGN §12).
+    #
+    # The revision starts at 1 for a new upstream version and goes up when
+    # debian/ changes for the same upstream version. The history (from the
+    # lock) says which revision was made from which debian/; the repository
+    # is the second witness: a revision it holds that the history does not
+    # vouch for (a lock lost or discarded, a repository ahead of the lock) is
+    # never given again, so a repository never receives two different files
+    # under one name.
+    class Versioning
+      Settled = Struct.new(:version, :published, keyword_init: true)
+
+      # +history+: History; +own+: OwnRepository.
+      def initialize(history:, own:)
+        @history = history
+        @own = own
+      end
+
+      # Settled version of +package+ (Debian name +deb_name+) on +target+,
+      # made from +upstream+ and a debian/ whose digest is +digest+.
+      def settle(target:, package:, deb_name:, upstream:, digest:)
+        recorded = @history.build(target, package, upstream)
+        revision = revision_from(recorded, digest)
+        vouched = recorded && recorded.revision == revision && recorded.debian_digest == digest
+        held = Debian::PackageVersion.parse(@own.version_of(deb_name, target))
+        if held && held.upstream == upstream && held.codename == target.codename
+          if held.revision > revision || (held.revision == revision && !vouched)
+            revision = held.revision + 1
+          end
+        end
+        version = Debian::PackageVersion.new(upstream, revision, target.codename)
+        Settled.new(version: version, published: vouched && version.same_as?(@own.version_of(deb_name, target))).freeze
+      end
+
+      private
+
+      def revision_from(recorded, digest)
+        return 1 unless recorded
+
+        recorded.debian_digest == digest ? recorded.revision : recorded.revision + 1
+      end
+    end
+  end
+end
