@@ -12,14 +12,16 @@ module Relspec
     # at REF are read with git (GitTree); the working tree side is the spec
     # file and releases/<r>/lock.yml as they are now. A spec git sees
     # renamed is compared with its old release; a deleted spec shows its
-    # release as removed, a new one as added.
+    # release as removed, a new one as added. A spec of the working tree
+    # without a lock yet is planned (+planner+: spec path => Plan::Lock).
     class BaseComparison
       SPECS = "specs"
       RELEASES = "releases"
 
       # +root+: the project folder (holding specs/ and releases/).
-      def initialize(root, ref)
+      def initialize(root, ref, planner:)
         @root = root
+        @planner = planner
         @tree = GitTree.new(root, ref)
       end
 
@@ -42,6 +44,11 @@ module Relspec
 
       private
 
+      # A working tree path as the user would write it.
+      def shown(path)
+        @root == "." ? path : File.join(@root, path)
+      end
+
       def release_of(path)
         File.basename(path, ".yml")
       end
@@ -61,11 +68,15 @@ module Relspec
         lock_path = "#{RELEASES}/#{name}/lock.yml"
         spec_path = "#{SPECS}/#{name}.yml"
         full_lock = File.join(@root, lock_path)
-        snapshot = File.file?(full_lock) ? LockView.parse(File.read(full_lock), source: lock_path) : Snapshot.empty(name, spec_path)
         full_spec = File.join(@root, spec_path)
-        raise Error, "#{spec_path} does not exist" unless File.file?(full_spec)
+        raise Error, "#{shown(spec_path)} does not exist" unless File.file?(full_spec)
 
-        snapshot.with_spec(Input.spec_data(File.read(full_spec), spec_path))
+        snapshot = if File.file?(full_lock)
+                     LockView.parse(File.read(full_lock), source: shown(lock_path))
+                   else
+                     LockView.snapshot(@planner.call(full_spec), source: shown(spec_path))
+                   end
+        snapshot.with_spec(Input.spec_data(File.read(full_spec), shown(spec_path)))
       end
     end
   end

@@ -15,7 +15,7 @@ module Relspec
 
       module_function
 
-      # +planner+: (spec path) => lock data, for spec inputs.
+      # +planner+: (spec path) => Plan::Lock, for spec inputs.
       def snapshot(argument, planner:)
         path = argument.to_s
         if File.directory?(path)
@@ -31,9 +31,9 @@ module Relspec
         lock = File.join(path, LOCK_FILE)
         raise Error, "#{path} is not a release folder: it has no #{LOCK_FILE}" unless File.file?(lock)
 
-        snapshot = LockView.parse(File.read(lock), source: lock)
-        spec = File.join(path, "..", "..", "specs", "#{snapshot.release}.yml")
-        File.file?(spec) ? snapshot.with_spec(spec_data(File.read(spec), spec)) : snapshot
+        # No spec is attached: which spec the lock was planned from is not
+        # known (the one in specs/ may be the changed one).
+        LockView.parse(File.read(lock), source: lock)
       end
 
       def file(path, planner)

@@ -36,7 +36,7 @@ module Relspec
       def summary(diff)
         lines = ["### #{diff.release}#{" (#{diff.status})" unless diff.status == 'changed'}", ""]
         diff.targets.select(&:changed?).each { |target| lines << "- **#{target.target}**: #{target.headline.split(': ', 2).last}" }
-        lines << "- #{diff.rebuilds} rebuild#{'s' unless diff.rebuilds == 1} in all" if diff.targets.count(&:changed?) > 1
+        lines << "- #{diff.rebuilds} new build#{'s' unless diff.rebuilds == 1} in all" if diff.targets.count(&:changed?) > 1
         unless diff.spec_changes.empty?
           lines << "" << "**Spec changes**" << ""
           diff.spec_changes.each { |change| lines << "- #{code_subject(change)}: #{Wording.decisions(change.decisions)}" }

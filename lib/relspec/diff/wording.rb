@@ -20,6 +20,7 @@ module Relspec
         text = case change.kind
                when "added" then decision(change.new)
                when "removed" then "was #{decision(change.old)}"
+               when "cause" then "#{decision(change.new)} (for another reason)"
                else "#{decision(change.old)} → #{decision(change.new)}"
                end
         change.commits ? "#{text}; commits #{change.commits}" : text
