@@ -12,8 +12,8 @@ module Relspec
     # at REF are read with git (GitTree); the working tree side is the spec
     # file and releases/<r>/lock.yml as they are now. A spec git sees
     # renamed is compared with its old release; a deleted spec shows its
-    # release as removed, a new one as added. A spec of the working tree
-    # without a lock yet is planned (+planner+: spec path => Plan::Lock).
+    # release as removed, a new one as added. A new spec of the working
+    # tree without a lock yet is planned (+planner+: spec path => Plan::Lock).
     class BaseComparison
       SPECS = "specs"
       RELEASES = "releases"
@@ -34,7 +34,8 @@ module Relspec
         wanted = names || after
         pairs = wanted.sort.map do |name|
           old_name = renamed[name] || name
-          [old_side(before.include?(old_name) ? old_name : nil, name), new_side(name)]
+          known = before.include?(old_name)
+          [old_side(known ? old_name : nil, name), new_side(name, plan: !known)]
         end
         return pairs if names
 
@@ -64,7 +65,9 @@ module Relspec
         spec ? snapshot.with_spec(Input.spec_data(spec, @tree.describe(spec_path))) : snapshot
       end
 
-      def new_side(name)
+      # +plan+: plan the spec when it has no lock (a new spec); a spec that
+      # had no lock at the ref either is compared by its spec alone.
+      def new_side(name, plan:)
         lock_path = "#{RELEASES}/#{name}/lock.yml"
         spec_path = "#{SPECS}/#{name}.yml"
         full_lock = File.join(@root, lock_path)
@@ -73,10 +76,12 @@ module Relspec
 
         snapshot = if File.file?(full_lock)
                      LockView.parse(File.read(full_lock), source: shown(lock_path))
-                   else
+                   elsif plan
                      LockView.snapshot(@planner.call(full_spec), source: shown(spec_path))
+                   else
+                     Snapshot.empty(name, shown(spec_path))
                    end
-        snapshot.with_spec(Input.spec_data(File.read(full_spec), shown(spec_path)))
+        snapshot.with_spec(Input.spec_data(File.read(full_spec), shown(spec_path)), spec_dir: File.dirname(full_spec))
       end
     end
   end

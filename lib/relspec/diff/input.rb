@@ -42,7 +42,7 @@ module Relspec
         return LockView.parse(text, source: path) if data.key?("relspec_lock")
         raise Error, "#{path} is neither a relspec lock nor a release spec" unless data.key?("release")
 
-        LockView.snapshot(planner.call(path), source: path).with_spec(data)
+        LockView.snapshot(planner.call(path), source: path).with_spec(data, spec_dir: File.dirname(path))
       end
 
       # The spec (or lock) file's data; {} for anything that is not a mapping.

@@ -14,7 +14,7 @@ module Relspec
     class ReleaseDiff
       attr_reader :old, :new, :targets, :ancestors, :spec_changes
 
-      def self.compare(old, new, counter: CommitCounter.new)
+      def self.compare(old, new, counter: CommitCounter.new(autoproj_root: new.workspace || old.workspace))
         commits = lambda do |package|
           before = old.packages[package]
           after = new.packages[package]
@@ -96,11 +96,11 @@ module Relspec
         groups.sort_by { |text, members| [-members.map(&:last).uniq.size, text] }
       end
 
-      # "base/types is blacklisted by "base/types" (…)"; facts about
-      # targets and ancestors need no package.
+      # "base/types is blacklisted by "base/types" (…)".
       def plain_cause(decision, package)
         root = decision.root_cause
-        return root if root.start_with?("no ancestor has target")
+        # Facts about targets and ancestors group all the packages they hit.
+        return root if root.start_with?("no ancestor has target", "missing in all ancestors")
 
         "#{decision.root_package(package)} is #{root}"
       end

@@ -39,14 +39,20 @@ module Relspec
     # (+source+, as the user named it), the spec digest, per ancestor and
     # codename the digest of what it provides, the package sources, per
     # target ("codename/arch") package => Decision, and the spec file's own
-    # data (+spec+, nil when not known) for spec-level changes.
-    Snapshot = Struct.new(:release, :source, :spec_digest, :ancestors, :packages, :targets, :spec, keyword_init: true) do
+    # data (+spec+, nil when not known) for spec-level changes; +workspace+:
+    # the autoproj workspace of a spec read from disk (where the sources'
+    # git repositories are, to count commits), nil otherwise.
+    Snapshot = Struct.new(:release, :source, :spec_digest, :ancestors, :packages, :targets, :spec, :workspace,
+                          keyword_init: true) do
       def self.empty(release, source)
         new(release: release, source: source, spec_digest: nil, ancestors: {}, packages: {}, targets: {}, spec: nil).freeze
       end
 
-      def with_spec(spec)
-        Snapshot.new(**to_h, spec: spec).freeze
+      # +spec_dir+: the folder of a spec file on disk (its workspace: is
+      # relative to it); nil for a spec read from git.
+      def with_spec(spec, spec_dir: nil)
+        workspace = spec_dir && spec["workspace"].is_a?(String) ? File.expand_path(spec["workspace"], spec_dir) : nil
+        Snapshot.new(**to_h, spec: spec, workspace: workspace && File.directory?(workspace) ? workspace : nil).freeze
       end
 
       def with_source(source)
