@@ -11,53 +11,30 @@ require "json"
 # with RELSPEC_UPDATE_GOLDEN=1 and review their diff.
 RSpec.describe "relspec diff" do
   GOLDEN = File.join(CliRunner::ROOT, "spec", "fixtures", "diff")
-  TARGETS = [%w[bionic amd64], %w[buster amd64]].freeze
-
-  CHILD = <<~YAML
-    parent: base
-    targets: { bionic: [amd64] }
-    pins:
-      base/types: { tag: v2.0.0 }
-    repository: { path: ../repos/child, trusted: true }
-    maintainer: Demo <demo@example.org>
-  YAML
+  CHILD = DiffProject::CHILD
 
   before(:all) do
     @dir = Dir.mktmpdir("relspec-diff")
-    @fixture = ReleaseFixture.new(@dir)
-    publish_base(older_logging: true)
-    @fixture.repository("other", TARGETS, { "base/cmake" => {}, "data/models" => {} })
-    @fixture.spec("base", "targets: { bionic: [amd64], buster: [amd64] }\nrepository: { path: ../repos/base, trusted: true }\n")
-    @fixture.spec("other", "targets: { bionic: [amd64], buster: [amd64] }\nrepository: { path: ../repos/other, trusted: true }\n")
-    @fixture.spec("child", CHILD, workspace: :checkouts)
-    File.write(File.join(@dir, ".gitignore"), "/repos/\n/ws/\n/catalog.yml\n")
-    GitProject.init(@dir)
-    %w[base other child].each { |release| write_lock(release) }
-    GitProject.commit_all(@dir, "demo releases")
+    @project = DiffProject.new(@dir)
+    @fixture = @project.fixture
   end
 
   after(:all) { FileUtils.rm_rf(@dir) }
 
   after do
-    GitProject.git(@dir, "checkout", "--quiet", "HEAD", "--", "specs", "releases")
+    @project.git("checkout", "--quiet", "HEAD", "--", "specs", "releases")
   end
 
-  # The base release's repository; with +older_logging+ its base/logging
-  # was built from an older commit than the workspace's.
   def publish_base(older_logging:)
-    FileUtils.rm_rf(File.join(@dir, "repos", "base"))
-    packages = ReleaseFixture::LAYOUT.to_h { |name| [name, {}] }
-    packages["base/logging"] = { commit_time: "2020-01-01T00:00:00Z" } if older_logging
-    @fixture.repository("base", TARGETS, packages)
+    @project.publish_base(older_logging: older_logging)
   end
 
-  def write_lock(release = "child")
-    run = relspec("plan", "--write", "specs/#{release}.yml", chdir: @dir)
-    expect(run.status).to be_success, run.stderr
+  def write_lock
+    @project.write_lock("child")
   end
 
   def change_child(yaml)
-    @fixture.spec("child", yaml, workspace: :checkouts)
+    @project.spec("child", yaml)
     write_lock
   end
 
