@@ -18,8 +18,16 @@ module Relspec
       def compare(old, new, targets)
         return [] unless old.is_a?(Hash) && new.is_a?(Hash)
 
-        changes = blacklist(old, new) + pins(old, new) + target_keys(old, new) + parent(old, new) + others(old, new)
+        changes = release(old, new) + blacklist(old, new) + pins(old, new) + target_keys(old, new) + parent(old, new) +
+                  others(old, new)
         changes.map { |change| SpecChange.new(**change, decisions: linked(change, targets)).freeze }
+      end
+
+      # A renamed release (its spec file renamed with it).
+      def release(old, new)
+        return [] if old["release"] == new["release"]
+
+        [{ key: "release", change: "changed", subject: nil, old: text(old["release"]), new: text(new["release"]) }]
       end
 
       def blacklist(old, new)
