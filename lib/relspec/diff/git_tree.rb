@@ -10,6 +10,9 @@ module Relspec
     # the index are not touched. Paths are relative to +root+ (the project
     # folder, which may be below the repository's top).
     class GitTree
+      # Keeps `git diff` from refreshing the index: reading must write nothing.
+      READ_ONLY = { "GIT_OPTIONAL_LOCKS" => "0" }.freeze
+
       attr_reader :ref
 
       def initialize(root, ref)
@@ -50,7 +53,7 @@ module Relspec
       private
 
       def git(*args)
-        out, _err, status = Open3.capture3("git", "-C", @root, *args)
+        out, _err, status = Open3.capture3(READ_ONLY, "git", "-C", @root, *args)
         [out, status]
       rescue SystemCallError => e
         raise Error, "cannot run git: #{e.message}"
