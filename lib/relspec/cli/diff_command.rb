@@ -1,7 +1,7 @@
 # frozen_string_literal: true
 
 require_relative "../diff"
-require_relative "../plan"
+require_relative "../display_path"
 
 module Relspec
   module CLI
@@ -46,15 +46,19 @@ module Relspec
       end
 
       def base_pairs
-        roots = @paths.map { |path| Plan.project_root(path) }.uniq
+        roots = @paths.map { |path| DisplayPath.of(File.dirname(File.dirname(File.expand_path(path)))) }.uniq
         raise Error, "the specs given belong to different projects: #{roots.join(', ')}" if roots.size > 1
 
         names = @paths.empty? ? nil : @paths.map { |path| File.basename(path, ".yml") }
         Diff::BaseComparison.new(roots.first || PROJECT_ROOT, @base, planner: planner).pairs(names)
       end
 
+      # Planning loads most of relspec: only when a spec must be planned.
       def planner
-        ->(path) { Plan.compute(path, timeout: @timeout).lock }
+        lambda do |path|
+          require_relative "../plan"
+          Plan.compute(path, timeout: @timeout).lock
+        end
       end
     end
   end
