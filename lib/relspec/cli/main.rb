@@ -168,7 +168,7 @@ module Relspec
                                    color: options.fetch(:color) { $stdout.tty? }).call
         end
         # With --exit-code, 1 means "differences": an error must say 2.
-        failed = DIFF_ERROR if failed == FriendlyErrors::EXIT_USER_ERROR && options[:exit_code]
+        failed = DIFF_ERROR if failed.nonzero? && options[:exit_code]
         finish(failed.zero? ? status : failed)
       end
 
