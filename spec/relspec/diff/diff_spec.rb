@@ -68,6 +68,38 @@ RSpec.describe "relspec diff" do
     expect([run.stdout, run.stderr, run.exit_code]).to eq(["", "", 0])
   end
 
+  it "identifies an ancestor by what it provides: re-exporting its repository changes no lock" do
+    release = File.join(@dir, "repos", "base", "dists", "bionic", "Release")
+    before = File.read(release)
+    sleep 1.1 # a new Date: field
+    publish_base(older_logging: true)
+    expect(File.read(release)).not_to eq(before)
+    write_lock
+    expect(@project.git("status", "--porcelain", "--", "releases")).to eq("")
+    expect(diff("--exit-code").exit_code).to eq(0)
+  end
+
+  it "names file and line of a lock it cannot read, without a backtrace, and exits 2 with --exit-code" do
+    lock = File.join(@dir, "releases", "child", "lock.yml")
+    File.write(lock, File.read(lock).sub("decision: inherit", "decision: borrow"))
+    run = relspec("diff", "releases/child/lock.yml", "specs/child.yml", "--exit-code", chdir: @dir)
+    expect(run.exit_code).to eq(2)
+    expect(run.stderr).to match(%r{\Areleases/child/lock\.yml:\d+:\d+: error\[lock\]: cannot read the lock: unknown decision "borrow"})
+    expect(run.stderr).not_to include(".rb:")
+    expect(run.stdout).to eq("")
+  end
+
+  it "needs two inputs, or --base" do
+    run = relspec("diff", "releases/child", chdir: @dir)
+    expect([run.stderr, run.exit_code]).to eq(["relspec: error: relspec diff needs OLD and NEW (lock files, release folders or specs), or --base REF\n", 1])
+  end
+
+  it "colours the text on request only" do
+    change_child(CHILD + "blacklist: [{ match: base/logging, reason: logging must be rebuilt }]\n")
+    expect(diff("--color").stdout).to include("\e[33minherit → build\e[0m")
+    expect(diff.stdout).not_to include("\e[")
+  end
+
   it "shows a new blacklist entry as inherit → build with its cause chain, linked to the spec change" do
     change_child(CHILD + "blacklist: [{ match: base/logging, reason: logging must be rebuilt }]\n")
     text = formats("blacklist")
