@@ -89,6 +89,18 @@ RSpec.describe "relspec diff" do
     expect(run.stdout).to eq("")
   end
 
+  it "plans a spec given as NEW or OLD, writing nothing" do
+    @project.spec("child", CHILD.sub("{ bionic: [amd64] }", "{ bionic: [amd64], buster: [amd64] }"))
+    run = relspec("diff", "releases/child", "specs/child.yml", chdir: @dir)
+    expect(run.stdout).to start_with("child: releases/child/lock.yml → specs/child.yml\n")
+    expect(run.stdout).to match(%r{^  buster/amd64: target added, 3 rebuilt$})
+    expect(run.stdout).not_to include("spec:") # a release folder's spec is not known
+    expect(@project.git("status", "--porcelain", "--", "releases")).to eq("") # planning wrote nothing
+
+    run = relspec("diff", "specs/child.yml", "specs/child.yml", "--exit-code", chdir: @dir)
+    expect([run.stdout, run.exit_code]).to eq(["", 0])
+  end
+
   it "needs two inputs, or --base" do
     run = relspec("diff", "releases/child", chdir: @dir)
     expect([run.stderr, run.exit_code]).to eq(["relspec: error: relspec diff needs OLD and NEW (lock files, release folders or specs), or --base REF\n", 1])
