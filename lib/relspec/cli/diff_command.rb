@@ -26,6 +26,10 @@ module Relspec
       end
 
       def call
+        if @fail_on_rebuilds&.negative?
+          raise InvalidOption, "--fail-on-rebuilds must be 0 or more, not #{@fail_on_rebuilds}"
+        end
+
         diffs = pairs.map { |old, new| Diff::ReleaseDiff.compare(old, new) }
         @out.write(Diff.render(diffs, @format, color: @color))
         rebuilds = diffs.sum(&:rebuilds)

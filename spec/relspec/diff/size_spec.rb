@@ -45,5 +45,7 @@ RSpec.describe "relspec diff of large releases" do
     expect(run.stderr).to include("100 rebuilds, more than the 99 allowed")
     expect(JSON.parse(run.stdout)["rebuilds"]).to eq(100)
     expect(relspec("diff", @old, @new, "--fail-on-rebuilds", "100").exit_code).to eq(0)
+    negative = relspec("diff", @old, @new, "--fail-on-rebuilds", "-1")
+    expect([negative.stderr, negative.exit_code]).to eq(["relspec: error: --fail-on-rebuilds must be 0 or more, not -1\n", 1])
   end
 end
