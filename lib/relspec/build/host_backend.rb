@@ -41,7 +41,7 @@ module Relspec
       def build(request)
         Dir.mktmpdir("relspec-host-build") do |work|
           tree = File.join(work, "source")
-          @tool.run(request.source, ["dpkg-source", "--no-check", "-x", request.dsc, tree], log: request.log)
+          @tool.run(request.source, ["dpkg-source", "-x", request.dsc, tree], log: request.log)
           local = check_build_dependencies(request, tree)
           command = ["dpkg-buildpackage", "-us", "-uc", "-b", "-d"]
           command = overlay(request, work, local) + command unless local.empty?
