@@ -7,7 +7,7 @@ require_relative "../cache_dir"
 module Relspec
   module Build
     # The chroot tarball sbuild builds in, one per codename/arch, made once
-    # with `mmdebstrap --variant=buildd --mode=unshare` and kept in
+    # with `mmdebstrap --variant=buildd --mode=unshare` (plus debhelper) and kept in
     # relspec's cache (<cache>/chroots/<codename>-<arch>.tar.zst) for every
     # later build and release.
     #
@@ -15,6 +15,9 @@ module Relspec
     # its components), else this machine's own apt sources when the codename
     # is the host's (archive `host: true`, or no archive at all).
     class Chroot
+      # Every package relspec emits build-depends on debhelper: in the
+      # tarball once, rather than installed again by every build.
+      INCLUDE = %w[debhelper].freeze
       HOST_SOURCES = ["/etc/apt/sources.list", *Dir.glob("/etc/apt/sources.list.d/*.{list,sources}").sort].freeze
 
       attr_reader :path
@@ -45,6 +48,7 @@ module Relspec
         partial = "#{@path}.#{Process.pid}.partial.tar.zst"
         begin
           @tool.run("chroot #{@target}", ["mmdebstrap", "--variant=buildd", "--mode=unshare", "--arch=#{@target.arch}",
+                                          "--include=#{INCLUDE.join(',')}",
                                           *components_option, @target.codename, partial, *mirrors], log: log)
           File.rename(partial, @path)
         ensure
