@@ -28,15 +28,21 @@ class BuildRelease
 
   # +cmake+: CMake code of a cmake package (configured, built and installed
   # by dh); without it, an import package.
-  def package(name, dependencies: [], cmake: nil)
+  # +osdeps+: OS dependencies (names of #osdeps).
+  def package(name, dependencies: [], cmake: nil, osdeps: [])
     files = { "#{name.tr('/', '-')}.txt" => "#{name}\n" }
     if cmake
       files["CMakeLists.txt"] = "cmake_minimum_required(VERSION 3.10)\nproject(p NONE)\n#{cmake}\n" \
                                 "install(FILES #{name.tr('/', '-')}.txt DESTINATION share)\n"
     end
     @builder.package(name, type: cmake ? :cmake : :import, date: "2020-03-01T00:00:00Z", dependencies: dependencies,
-                           files: files)
+                           files: files, osdeps: osdeps)
     @names << name
+  end
+
+  # The package set's .osdeps file.
+  def osdeps(yaml)
+    @builder.osdeps(yaml)
   end
 
   def spec_path
