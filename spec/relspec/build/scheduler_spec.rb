@@ -45,7 +45,7 @@ RSpec.describe "relspec build scheduling (host backend)", order: :defined do
     # slow and quick have no dependency; after needs quick; broken fails
     # (dpkg-buildpackage: cmake stops), its reverse dependencies come in two
     # levels; apart is independent of all of them.
-    @release.package("base/slow", cmake: "execute_process(COMMAND sleep 8)")
+    @release.package("base/slow", cmake: "execute_process(COMMAND sleep 12)")
     @release.package("base/quick")
     @release.package("base/after", dependencies: ["base/quick"])
     @release.package("base/broken", cmake: 'message(FATAL_ERROR "this package does not build")')
