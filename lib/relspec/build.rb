@@ -86,7 +86,7 @@ module Relspec
 
         @only.map do |name|
           all.find { |target| target.to_s == name } or
-            raise BuildError, "#{@effective.release} has no target #{name} (targets: #{all.join(', ')})"
+            raise InvalidOption, "#{@effective.release} has no target #{name} (targets: #{all.join(', ')})"
         end
       end
 
