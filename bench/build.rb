@@ -6,7 +6,8 @@
 # max(critical path, total build time / jobs) computed from the durations
 # the run itself recorded in build-results.yml (target ≤ 1.15). The peer is
 # the same release built again with --jobs 1 (serial), in the same run.
-# Last, a build with nothing to do (everything recorded as built).
+# Last, a build with nothing to do (everything recorded as built), against
+# `relspec show` of the same spec (starting relspec and reading the spec).
 #
 #   bundle exec ruby bench/build.rb [PACKAGES] [LAYERS]
 require "fileutils"
@@ -21,14 +22,15 @@ COUNT = Integer(ARGV.fetch(0, "30"))
 LAYERS = Integer(ARGV.fetch(1, "5"))
 JOBS = 2
 
-def build(dir, *args)
-  output = nil
-  seconds = Timing.seconds do
-    output, status = Open3.capture2e(RbConfig.ruby, BuildRelease::EXE, "build", "specs/bench.yml", "--out", "out",
-                                     "--backend", "host", "--quiet", *args, chdir: dir)
-    raise "relspec build failed:\n#{output}" unless status.success?
+def relspec(dir, *args)
+  Timing.seconds do
+    output, status = Open3.capture2e(RbConfig.ruby, BuildRelease::EXE, *args, chdir: dir)
+    raise "relspec #{args.first} failed:\n#{output}" unless status.success?
   end
-  seconds
+end
+
+def build(dir, *args)
+  relspec(dir, "build", "specs/bench.yml", "--out", "out", "--backend", "host", "--quiet", *args)
 end
 
 # Longest chain of recorded durations through the build-dependencies.
@@ -62,7 +64,10 @@ Dir.mktmpdir("relspec-bench-build") do |dir|
   path = critical_path(plan, durations)
   bound = [path, total / JOBS].max
   serial = build(dir, "--jobs", "1", "--rebuild")
-  idle = build(dir, "--jobs", JOBS.to_s)
+  idle = Timing.median(3) { build(dir, "--jobs", JOBS.to_s) }
+  # The peer of a build with nothing to do: relspec starting and reading the
+  # spec hierarchy (`relspec show`), on the same loaded machine.
+  show = Timing.median(3) { relspec(dir, "show", "specs/bench.yml") }
 
   puts format("%d packages, %d layers, host backend", COUNT, LAYERS)
   puts format("--jobs %d wall time          %7.1f s", JOBS, wall)
@@ -71,5 +76,5 @@ Dir.mktmpdir("relspec-bench-build") do |dir|
   puts format("  lower bound                %7.1f s", bound)
   puts format("  ratio wall / lower bound   %7.2f   (target <= 1.15)", wall / bound)
   puts format("--jobs 1 (serial peer)       %7.1f s   (ratio serial / --jobs %d: %.2f)", serial, JOBS, serial / wall)
-  puts format("nothing to do                %7.2f s", idle)
+  puts format("nothing to do                %7.2f s   (relspec show: %.2f s, ratio %.2f)", idle, show, idle / show)
 end
