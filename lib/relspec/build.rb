@@ -84,7 +84,7 @@ module Relspec
         all = @effective.targets.flat_map { |codename, arches| Array(arches).map { |arch| Target.new(codename, arch) } }
         return all if @only.nil? || @only.empty?
 
-        @only.map do |name|
+        @only.uniq.map do |name|
           all.find { |target| target.to_s == name } or
             raise InvalidOption, "#{@effective.release} has no target #{name} (targets: #{all.join(', ')})"
         end
