@@ -10,7 +10,7 @@ require_relative "../../support/build_release"
 # dpkg-buildpackage.
 RSpec.describe "relspec build scheduling (host backend)", order: :defined do
   # Records when each package started and finished (monotonic seconds).
-  class EventLog
+  class BuildEventLog
     attr_reader :events
 
     def initialize
@@ -66,7 +66,7 @@ RSpec.describe "relspec build scheduling (host backend)", order: :defined do
   end
 
   def build(**options)
-    log = EventLog.new
+    log = BuildEventLog.new
     reports = Relspec::Build.run(@release.spec_path, out: File.join(@dir, "out"), backend: "host", listener: log,
                                                      **options)
     [reports.first, log]
