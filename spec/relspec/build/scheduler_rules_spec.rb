@@ -6,10 +6,10 @@ require "relspec/build/scheduler"
 # The scheduler's rules on plain entries (it knows nothing of Debian; the
 # block is the build). Real builds go through it in scheduler_spec.rb.
 RSpec.describe Relspec::Build::Scheduler do
-  ENTRY = Struct.new(:source, :build_depends)
+  SCHEDULER_ENTRY = Struct.new(:source, :build_depends)
 
   def entries(graph)
-    graph.map { |source, deps| ENTRY.new(source, deps) }
+    graph.map { |source, deps| SCHEDULER_ENTRY.new(source, deps) }
   end
 
   it "never runs more than --jobs builds at once, and uses them" do
