@@ -94,7 +94,10 @@ module Relspec
         results = Results.read(dir)
         current = plan.entries.to_h { |entry| [entry.source, true] }
         results.records.select! { |source, _| current[source] } # what compile no longer plans is not a result
-        done = @rebuild ? [] : plan.entries.select { |entry| results.built?(entry.source, entry.version) }.map(&:source)
+        # A package built by another backend (a host build after sbuild ones)
+        # is not what this run would build: built again.
+        reuse = !@rebuild && results.backend == backend.name
+        done = reuse ? plan.entries.select { |entry| results.built?(entry.source, entry.version) }.map(&:source) : []
         @listener&.start(target, plan.entries.size, done.size)
         local = Mutex.new
         debs = done.flat_map { |source| debs_of(dir, results[source]) }

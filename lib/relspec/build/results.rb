@@ -23,7 +23,7 @@ module Relspec
         end
       end
 
-      attr_reader :dir, :records
+      attr_reader :dir, :records, :backend
 
       def self.read(dir)
         path = File.join(dir, FILE)
@@ -36,14 +36,16 @@ module Relspec
             records[source] = Record.new(**fields.slice(*Record.members.map(&:to_s)).transform_keys(&:to_sym))
           end
         end
-        new(dir, records)
+        new(dir, records, backend: data.is_a?(Hash) ? data["backend"] : nil)
       rescue Psych::Exception
         new(dir, {}) # an unreadable record only costs rebuilding; it never blocks a build
       end
 
-      def initialize(dir, records = {})
+      # +backend+: the backend of the run that wrote the file.
+      def initialize(dir, records = {}, backend: nil)
         @dir = dir
         @records = records
+        @backend = backend
       end
 
       # True when +source+ was built at +version+ and every file it produced

@@ -43,6 +43,10 @@ RSpec.describe "relspec build --backend sbuild", order: :defined do
     expect(again.exit_code).to eq(0), again.stderr
     expect(again.stdout).to eq("bookworm/amd64: chroot ready\n")
     expect(File.mtime(chroot)).to eq(mtime)
+
+    # Another backend's builds are not reused: host builds both again.
+    host = relspec("build", "specs/sb.yml", "--out", "out", "--backend", "host", chdir: @dir)
+    expect(host.stdout).to include("bookworm/amd64: 2 built, 0 already built")
   end
 
   it "says which setting provides a mirror when a chroot cannot be made" do
