@@ -38,7 +38,7 @@ Dir.mktmpdir("relspec-bench-sbuild") do |dir|
   sbuild = duration(release)
   again = relspec(dir, "build", "specs/sbench.yml", "--out", "out", "--quiet", "--prepare")
 
-  puts format("chroot (--prepare)          %6.1f s (0 when already in the cache)", prepare)
+  puts format("first --prepare             %6.1f s (makes the chroot unless the cache has it)", prepare)
   puts format("host backend, one package   %6.1f s", host)
   puts format("sbuild, same package        %6.1f s  (overhead %.1f s per package, ratio %.1f)", sbuild,
               sbuild - host, sbuild / host)
