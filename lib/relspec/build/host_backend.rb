@@ -31,10 +31,6 @@ module Relspec
         NAME
       end
 
-      def describe
-        "host (dpkg-buildpackage on this machine, with the build-dependencies installed here)"
-      end
-
       # Nothing to prepare: the machine is the build environment.
       def prepare(_target, log: nil); end
 

@@ -35,10 +35,6 @@ module Relspec
         NAME
       end
 
-      def describe
-        "sbuild (unshare mode, clean chroot)"
-      end
-
       # Makes the target's chroot tarball unless it exists; true if it did.
       def prepare(target, log:)
         chroot(target).ensure(log)
