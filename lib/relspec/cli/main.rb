@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require "thor"
+require_relative "checked_options"
 require_relative "../version"
 require_relative "catalog_commands"
 require_relative "osdeps_commands"
@@ -11,6 +12,8 @@ module Relspec
     # only declares options and hands them over. Command classes are required
     # when their command runs, so that each command loads only what it needs.
     class Main < Thor
+      include CheckedOptions
+
       package_name "relspec"
 
       def self.exit_on_failure?
