@@ -9,6 +9,7 @@ require_relative "overlay"
 require_relative "overlay_patch"
 require_relative "naming"
 require_relative "../atomic_file"
+require_relative "../temporaries"
 require_relative "../diagnostic"
 require_relative "../error"
 
@@ -68,7 +69,8 @@ module Relspec
 
         parent = File.dirname(dir)
         FileUtils.mkdir_p(parent)
-        work = Dir.mktmpdir(".#{source}-", parent)
+        work = Temporaries.path(parent, source)
+        Dir.mkdir(work, 0o700)
         begin
           build_in(work)
           File.write(File.join(work, "out", STAMP), stamp)
@@ -108,7 +110,7 @@ module Relspec
         return path if File.file?(path)
 
         FileUtils.mkdir_p(File.dirname(path))
-        temporary = "#{path}.#{Process.pid}.#{Thread.current.object_id}.tmp"
+        temporary = Temporaries.path(File.dirname(path), name)
         write_orig(temporary)
         File.rename(temporary, path)
         path
