@@ -11,6 +11,8 @@ module Relspec
   # compile still running in parallel, which it must leave alone.
   module Temporaries
     PATTERN = /\A\..+\.relspec-(\d+)-[0-9a-f]{8}\z/
+    # AtomicFile's temporary files: ".<name>.<pid>.tmp"
+    ATOMIC = /\A\..+\.(\d+)\.tmp\z/
 
     module_function
 
@@ -23,7 +25,7 @@ module Relspec
     # Returns the names removed.
     def sweep(dir)
       Dir.children(dir).select do |name|
-        pid = PATTERN.match(name)&.[](1)&.to_i
+        pid = (PATTERN.match(name) || ATOMIC.match(name))&.[](1)&.to_i
         next false if pid.nil? || running?(pid)
 
         FileUtils.rm_rf(File.join(dir, name))
