@@ -9,13 +9,16 @@ require "digest"
 # failing in tar with a hint about overlays. Both end with the files a clean
 # compile writes.
 RSpec.describe "relspec compile over damaged outputs" do
-  around do |example|
-    Dir.mktmpdir("relspec-hostile-output") do |dir|
-      @dir = dir
-      @spec = ReleaseFixture.new(dir).standalone("h", select: ["base/cmake"], targets: "bionic: [amd64, arm64]")
-      example.run
-    end
+  # One fixture for all (building it is most of the time); each example
+  # starts without output.
+  before(:all) do
+    @dir = Dir.mktmpdir("relspec-hostile-output")
+    @spec = ReleaseFixture.new(@dir).standalone("h", select: ["base/cmake"], targets: "bionic: [amd64, arm64]")
   end
+
+  after(:all) { FileUtils.rm_rf(@dir) }
+
+  after { FileUtils.rm_rf([File.join(@dir, "out"), File.join(@dir, "releases")]) }
 
   def compile
     run = relspec("compile", @spec, "--out", "out", "--no-check", chdir: @dir)

@@ -6,13 +6,16 @@ require "spec_helper"
 # overlay folder and patch names quilt's series file cannot carry are refused
 # with the path in the message, and nothing is emitted.
 RSpec.describe "relspec compile on hostile overlays" do
-  around do |example|
-    Dir.mktmpdir("relspec-hostile-overlay") do |dir|
-      @dir = dir
-      @spec = ReleaseFixture.new(dir).standalone("h", select: ["base/cmake"], targets: "bionic: [amd64]")
-      example.run
-    end
+  # One fixture for all (building it is most of the time); each example
+  # starts without overlays and without output.
+  before(:all) do
+    @dir = Dir.mktmpdir("relspec-hostile-overlay")
+    @spec = ReleaseFixture.new(@dir).standalone("h", select: ["base/cmake"], targets: "bionic: [amd64]")
   end
+
+  after(:all) { FileUtils.rm_rf(@dir) }
+
+  after { FileUtils.rm_rf([File.join(@dir, "overlays"), File.join(@dir, "out"), File.join(@dir, "outside")]) }
 
   def compile
     relspec("compile", @spec, "--out", "out", "--no-check", chdir: @dir)
