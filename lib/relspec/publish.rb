@@ -77,9 +77,14 @@ module Relspec
       changed = write_config(repository, config)
       PoolGuard.check(repository, uploads.values.flatten.flat_map(&:items))
       targets = results.map do |target, read|
-        fresh, held = uploads[target].partition { |upload| upload.items.any? { |item| !File.file?(File.join(repository, item.pool)) } }
+        listed = File.directory?(File.join(repository, "db")) ? reprepro.sources(target.codename) : []
+        held, fresh = uploads[target].partition { |upload| listed.include?("#{upload.source} #{upload.version}") }
         fresh.each { |upload| reprepro.includedsc(target.codename, upload.dsc) }
-        reprepro.includedeb(target.codename, fresh.flat_map(&:debs)) unless fresh.empty?
+        # Every .deb of the target in one call, held ones too: reprepro skips
+        # what it has, and a run interrupted after a source was included but
+        # before its .debs were gets them now.
+        debs = uploads[target].flat_map(&:debs)
+        reprepro.includedeb(target.codename, debs) unless debs.empty?
         TargetResult.new(target: target, results_path: read&.path, published: fresh.map(&:source), held: held.map(&:source),
                          left_out: read ? read.entries.reject(&:built?) : [], built: !read.nil?)
       end

@@ -22,6 +22,11 @@ module Relspec
         run("includedeb", codename, *debs)
       end
 
+      # The source packages +codename+ holds, as "source version" lines.
+      def sources(codename)
+        run("--architecture", "source", "--list-format", "${package} ${version}\n", "list", codename).lines.map(&:chomp)
+      end
+
       def export
         run("export")
       end
