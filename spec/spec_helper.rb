@@ -13,6 +13,7 @@ require_relative "support/release_file_editor"
 require_relative "support/release_fixture"
 require_relative "support/gem_builder"
 require_relative "support/stand_in_build"
+require_relative "support/private_apt"
 
 # In-process runs cache like CLI runs do: in a folder of the test run.
 ENV["XDG_CACHE_HOME"] = CliRunner::CACHE

@@ -14,12 +14,14 @@ require_relative "host_build"
 class StandInBuild
   attr_reader :target_dir
 
-  # +out+: compile's --out; +target+: "codename/arch".
-  def initialize(out, release, target, scratch)
+  # +out+: compile's --out; +target+: "codename/arch"; +installed+: .debs
+  # of ancestor releases the builds need at /opt.
+  def initialize(out, release, target, scratch, installed: [])
     @release = release
     @target = target
     @target_dir = File.join(out, release, target.tr("/", "-"))
     @host = HostBuild.new(scratch)
+    installed.each { |deb| @host.install(deb) }
   end
 
   # Builds every package of plan.yml; +failed+: sources recorded as failed
