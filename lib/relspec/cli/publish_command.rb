@@ -21,11 +21,21 @@ module Relspec
                                     waiting: -> { @err.puts("waiting for another relspec publish to finish…") })
         result.targets.each { |target| report(target) }
         @io.puts("#{result.release}: #{result.repository}: #{result.osdeps_written.zero? ? 'osdeps unchanged' : "wrote #{result.osdeps_written} osdeps files"}")
-        result.osdeps_missing.each { |line| @err.puts("not in the repository yet: #{line}") }
+        note_missing(result.osdeps_missing)
         0
       end
 
       private
+
+      # Planned packages the osdeps files leave out, counted per target (the
+      # list is `relspec osdeps --from-repository`'s).
+      def note_missing(missing)
+        return if missing.empty?
+
+        counts = missing.map { |line| line.split(" ", 2).first }.tally.map { |target, count| "#{target}: #{count}" }
+        @err.puts("not in the repository yet, so not in its osdeps files: #{missing.size} planned packages " \
+                  "(#{counts.join(', ')}); relspec osdeps SPEC --from-repository lists them")
+      end
 
       def report(target)
         unless target.built

@@ -15,13 +15,19 @@ module Relspec
 
       # +items+: Upload::Item; raises PublishError on the first conflict.
       def check(repository, items)
-        conflicts = items.filter_map do |item|
-          held = File.join(repository, item.pool)
-          next unless File.file?(held)
+        digests = Hash.new { |hash, path| hash[path] = Digest::SHA256.file(path).hexdigest }
+        conflicts = items.group_by(&:pool).flat_map do |pool, same|
+          held = File.join(repository, pool)
+          first = same.first
+          within = same.reject { |item| digests[item.local] == digests[first.local] }.map do |item|
+            "#{item.local} (sha256 #{digests[item.local]}) differs from #{first.local} (sha256 #{digests[first.local]}), " \
+              "both to be published as #{pool}"
+          end
+          next within unless File.file?(held)
 
-          ours = Digest::SHA256.file(item.local).hexdigest
-          theirs = Digest::SHA256.file(held).hexdigest
-          "#{item.local} (sha256 #{ours}) differs from #{held} (sha256 #{theirs}), already published" unless ours == theirs
+          within + same.reject { |item| digests[item.local] == digests[held] }.map do |item|
+            "#{item.local} (sha256 #{digests[item.local]}) differs from #{held} (sha256 #{digests[held]}), already published"
+          end
         end
         return if conflicts.empty?
 
