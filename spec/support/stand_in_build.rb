@@ -12,7 +12,7 @@ require_relative "host_build"
 # build-results.yml in the agreed format. Once the real command is merged,
 # tests should call `relspec build --backend host` instead.
 class StandInBuild
-  attr_reader :target_dir
+  attr_reader :target_dir, :host
 
   # +out+: compile's --out; +target+: "codename/arch"; +installed+: .debs
   # of ancestor releases the builds need at /opt.
