@@ -2,6 +2,7 @@
 
 require "spec_helper"
 require "yaml"
+require "relspec/publish"
 
 # `relspec publish` end to end, with real parts: the demo workspace compiled
 # by relspec, built with dpkg-buildpackage (StandInBuild, until `relspec
@@ -194,5 +195,25 @@ RSpec.describe "relspec publish" do
     FileUtils.rm_rf(repository)
     expect(publish.exit_code).to eq(0)
     expect(repository_state.keys).to eq(concurrent.keys)
+  end
+
+  it "finishes a publication interrupted after a source package was included" do
+    expect(publish.exit_code).to eq(0)
+    complete = repository_state
+    FileUtils.rm_rf(repository)
+    # what a publisher killed between reprepro's includedsc and includedeb leaves
+    FileUtils.mkdir_p(File.join(repository, "conf"))
+    Relspec::Publish::RepositoryConfig.new(release: "solo", targets: [Relspec::Plan::Target.parse(TARGET)]).files
+                                      .each { |name, text| File.write(File.join(repository, "conf", name), text) }
+    dsc = Dir.glob(File.join(@build.target_dir, cmake, "*.dsc")).first
+    output, status = Open3.capture2e("reprepro", "-b", repository, "includedsc", "bookworm", dsc)
+    expect(status).to be_success, output
+
+    run = publish
+    expect(run.exit_code).to eq(0), run.stderr
+    expect(run.stdout).to include("1 published, 1 already in the repository")
+    pool = ->(state) { state.select { |path, _| path.start_with?("pool/", "osdeps/") } }
+    expect(pool.call(repository_state)).to eq(pool.call(complete))
+    expect(repository_state.keys).to eq(complete.keys)
   end
 end
