@@ -216,4 +216,21 @@ RSpec.describe "relspec publish" do
     expect(pool.call(repository_state)).to eq(pool.call(complete))
     expect(repository_state.keys).to eq(complete.keys)
   end
+
+  it "reports a reprepro failure as one message with the tool, its exit status and output" do
+    deb = Dir.glob(File.join(@build.target_dir, "results", logging, "*.deb")).first
+    original = File.binread(deb)
+    File.binwrite(deb, "not a Debian package\n")
+    edit_results do |data|
+      entry = data["packages"][logging]["files"].find { |file| file["name"].end_with?(".deb") }
+      entry.merge!("sha256" => Digest::SHA256.file(deb).hexdigest, "size" => File.size(deb))
+    end
+    run = publish
+    expect(run.exit_code).to eq(1)
+    expect(run.stderr).to match(/reprepro includedeb failed \(exit status \d+\) in .*repos\/solo:\n/)
+    expect(run.stderr).to include(File.basename(deb))
+    expect(run.stderr).not_to include(".rb:")
+  ensure
+    File.binwrite(deb, original) if original
+  end
 end
