@@ -25,11 +25,13 @@ module Relspec
     # +check+: run the availability check first (Availability.guard, with
     # these options when a Hash) and refuse a release whose OS dependencies
     # are missing; false skips it.
-    def self.run(path, out:, jobs: 2, timeout: 10, progress: nil, discard_lock: false, check: true)
-      new(path, out, jobs, timeout, progress, discard_lock: discard_lock, check: check).run
+    # +planned+ (optional) is called with the Plan::Result before anything
+    # is written.
+    def self.run(path, out:, jobs: 2, timeout: 10, progress: nil, discard_lock: false, check: true, planned: nil)
+      new(path, out, jobs, timeout, progress, discard_lock: discard_lock, check: check, planned: planned).run
     end
 
-    def initialize(path, out, jobs, timeout, progress = nil, discard_lock: false, check: true)
+    def initialize(path, out, jobs, timeout, progress = nil, discard_lock: false, check: true, planned: nil)
       @path = path
       @out = out
       @jobs = [jobs.to_i, 1].max
@@ -37,10 +39,12 @@ module Relspec
       @progress = progress
       @discard_lock = discard_lock
       @check = check
+      @on_planned = planned
     end
 
     def run
       @planned = Plan.compute(@path, timeout: @timeout, discard_lock: @discard_lock)
+      @on_planned&.call(@planned)
       @effective = @planned.resolution.effective
       require_maintainer
       require_workspace

@@ -20,6 +20,9 @@ module Relspec
     end
   end
 
+  # A command-line option has a value relspec cannot use.
+  class InvalidOption < Error; end
+
   # releases/<r>/lock.yml cannot be read; it is never overwritten then.
   class LockError < InvalidInput; end
 

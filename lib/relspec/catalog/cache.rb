@@ -57,8 +57,10 @@ module Relspec
         data = Psych.safe_load(File.read(path))
         return nil unless data.is_a?(Hash) && data["relspec"] == loader_version
 
-        { fingerprint: data["fingerprint"], catalog: SnapshotSource.build(data.fetch("catalog"), nil) }
-      rescue Psych::Exception, InvalidInput, KeyError
+        return nil unless SnapshotShape.valid?(data["catalog"])
+
+        { fingerprint: data["fingerprint"], catalog: SnapshotSource.build(data["catalog"]) }
+      rescue Psych::Exception
         nil
       end
 

@@ -4,6 +4,7 @@ require_relative "../catalog"
 require_relative "../yaml/writer"
 require_relative "../yaml/located_document"
 require_relative "../error"
+require_relative "snapshot_shape"
 
 module Relspec
   class Catalog
@@ -35,18 +36,17 @@ module Relspec
                                                 location: document.location([]),
                                                 hint: "write one with `relspec catalog export WORKSPACE > #{path}`")]
         end
-        build(data, document)
+        problems = SnapshotShape.problems(data, document)
+        raise InvalidInput, problems unless problems.empty?
+
+        build(data)
       end
 
-      def build(data, document)
+      def build(data)
         packages = data.fetch("packages", {}).to_h { |name, entry| [name, Package.from_h(name, entry)] }
         Catalog.new(packages: packages, metapackages: data.fetch("metapackages", {}), layout: data.fetch("layout", []),
                     excluded: data.fetch("excluded", []), ignored: data.fetch("ignored", []),
                     codenames: data.fetch("codenames", []))
-      rescue ArgumentError, TypeError, NoMethodError, KeyError => e
-        raise InvalidInput, [Diagnostic.error("catalog-format", "malformed catalog snapshot: #{e.message}",
-                                              location: document ? document.location([]) : Location.file_only("catalog"),
-                                              hint: "regenerate it with `relspec catalog export`")]
       end
     end
   end

@@ -1,13 +1,16 @@
 # frozen_string_literal: true
 
 require_relative "../compile"
+require_relative "discarded_lock"
 
 module Relspec
   module CLI
     # `relspec compile SPEC`: the source packages of everything the release
     # builds, plan.yml per target, the lock and the osdeps files.
     class CompileCommand
-      def initialize(path:, out:, jobs:, timeout:, out_io:, progress_io: nil, discard_lock: false, check: true)
+      def initialize(path:, out:, jobs:, timeout:, out_io:, progress_io: nil, err_io: $stderr, discard_lock: false,
+                     check: true)
+        @err = err_io
         @discard_lock = discard_lock
         @check = check
         @path = path
@@ -20,7 +23,8 @@ module Relspec
 
       def call
         result = Compile.run(@path, out: @out, jobs: @jobs, timeout: @timeout, progress: progress_bar,
-                                    discard_lock: @discard_lock, check: @check)
+                                    discard_lock: @discard_lock, check: @check,
+                                    planned: ->(planned) { DiscardedLock.warn(planned, @err) })
         if result.written.empty? && !result.lock_changed && result.osdeps_written.zero?
           @io.puts("#{result.release}: nothing changed (#{result.unchanged.size} source packages up to date)")
         else

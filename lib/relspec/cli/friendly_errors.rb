@@ -18,12 +18,12 @@ module Relspec
       rescue InvalidInput => e
         stderr.puts(e.diagnostics.map(&:to_s))
         stderr.puts(Summary.of(e.diagnostics))
-        EXIT_USER_ERROR
+        e.status_code
       rescue Error => e
         raise if debug
 
         stderr.puts("relspec: error: #{e.message}")
-        EXIT_USER_ERROR
+        e.status_code
       rescue SystemCallError => e
         raise if debug
 

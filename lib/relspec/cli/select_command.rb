@@ -37,8 +37,6 @@ module Relspec
 
       def parse_os
         Osdeps::OperatingSystem.parse(@options[:os])
-      rescue ArgumentError => e
-        raise Error, e.message
       end
 
       # The user's codename, to read repository URLs with.

@@ -23,7 +23,7 @@ module Relspec
           else
             Apt::PackageIndex.parse(read_file(source))
           end
-        rescue Apt::Repository::Error, Apt::Deb822::ParseError, ArgumentError, SystemCallError => e
+        rescue Apt::Repository::Error, Apt::Deb822::ParseError, Apt::PackageIndex::Invalid, ToolError, Zlib::Error, SystemCallError => e
           raise InvalidInput, [Diagnostic.error("index", "cannot read the index #{source}: #{e.message}",
                                                 location: Location.file_only(source))]
         end
@@ -32,7 +32,7 @@ module Relspec
       def read_file(path)
         bytes = File.binread(path)
         case path
-        when /\.gz\z/ then Zlib.gunzip(bytes)
+        when /\.gz\z/ then Zlib::GzipReader.zcat(StringIO.new(bytes)) # every member, as gzip -d reads them
         when /\.xz\z/ then decompress("xz", bytes)
         when /\.lz4\z/ then decompress("lz4cat", bytes)
         else bytes
@@ -42,7 +42,7 @@ module Relspec
       def decompress(tool, bytes)
         command = tool == "xz" ? %w[xz -dc] : [tool]
         out, err, status = Open3.capture3(*command, stdin_data: bytes, binmode: true)
-        raise ArgumentError, "#{tool}: #{err.strip}" unless status.success?
+        raise ToolError, "#{tool}: #{err.strip}" unless status.success?
 
         out
       end

@@ -1,5 +1,7 @@
 # frozen_string_literal: true
 
+require_relative "../error"
+
 module Relspec
   module Osdeps
     # The system a user's workspace runs on, as autoproj names it:
@@ -10,7 +12,7 @@ module Relspec
         names = names.to_s.split(",").map(&:strip).reject(&:empty?)
         versions = versions.to_s.split(",").map(&:strip).reject(&:empty?)
         if names.empty? || versions.empty?
-          raise ArgumentError, "--os is written names:versions, e.g. ubuntu,debian:18.04,bionic (got #{text.inspect})"
+          raise InvalidOption, "--os is written names:versions, e.g. ubuntu,debian:18.04,bionic (got #{text.inspect})"
         end
 
         new(names.freeze, versions.freeze).freeze

@@ -2,28 +2,38 @@
 
 module Relspec
   module Plan
-    # Package names in dependency order: dependencies first, then by name.
-    # A dependency cycle (autoproj refuses them, snapshots might not) does not
-    # stop the order: the first remaining name goes next.
+    # Package names in dependency order: in waves, each wave the packages
+    # whose dependencies are all in earlier waves, by name. A dependency
+    # cycle (autoproj refuses them, snapshots might not) does not stop the
+    # order: the first remaining name goes next.
     module BuildOrder
       module_function
 
       # +names+: the packages to order; dependencies outside +names+ are ignored.
       def of(catalog, names)
         wanted = names.to_h { |name| [name, true] }
-        pending = names.sort
-        done = {}
+        waiting = {}
+        dependents = Hash.new { |hash, name| hash[name] = [] }
+        names.each do |name|
+          deps = catalog.package(name).build_dependencies.select { |dep| wanted[dep] && dep != name }.uniq
+          waiting[name] = deps.size
+          deps.each { |dep| dependents[dep] << name }
+        end
         ordered = []
-        until pending.empty?
-          ready = pending.select do |name|
-            catalog.package(name).build_dependencies.all? { |dep| done[dep] || !wanted[dep] }
-          end
-          ready = [pending.first] if ready.empty?
-          ready.each do |name|
+        wave = waiting.select { |_, count| count.zero? }.keys.sort
+        until ordered.size == names.size
+          wave = [waiting.keys.min] if wave.empty?
+          following = []
+          wave.each do |name|
+            waiting.delete(name)
             ordered << name
-            done[name] = true
+            dependents.fetch(name, []).each do |dependent|
+              next unless waiting.key?(dependent)
+
+              following << dependent if (waiting[dependent] -= 1).zero?
+            end
           end
-          pending -= ready
+          wave = following.sort
         end
         ordered
       end

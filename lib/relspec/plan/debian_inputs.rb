@@ -15,6 +15,10 @@ module Relspec
         @effective = effective
         @ancestors = ancestors.to_h { |ancestor| [ancestor.name, ancestor] }
         @release_catalog = release_catalog
+        # install folders by where a package comes from: asked once per
+        # package of every closure, so computed once
+        @install_dirs = {}
+        @closures = Hash.new { |hash, target| hash[target] = {} }
       end
 
       # +decisions+: the target's decisions, those of dependencies settled.
@@ -25,7 +29,7 @@ module Relspec
           package: package, deb_name: decision.deb_name, upstream: upstream, codename: target.codename,
           release: @effective.release, maintainer: @effective["maintainer"], install_dir: install_dir_of(decision),
           debhelper_compat: @effective.distributions.fetch(target.codename).debhelper_compat,
-          dependencies: dependencies_of(package, decisions), closure: closure_dirs(package, decisions), apt: os.apt,
+          dependencies: dependencies_of(package, decisions), closure: closure_dirs(target, package, decisions), apt: os.apt,
           gems: Debian::ControlRelations.distribution_gems(os, @release_catalog.gems.keys),
           gem: @release_catalog.gems[package.name]
         }
@@ -36,6 +40,13 @@ module Relspec
       def install_dir_of(decision)
         return nil if decision.system?
 
+        key = [decision.inherit? && decision.ancestor, decision.deb_name]
+        @install_dirs.fetch(key) { @install_dirs[key] = compute_install_dir(decision) }
+      end
+
+      private
+
+      def compute_install_dir(decision)
         if decision.inherit?
           ancestor = @ancestors.fetch(decision.ancestor)
           prefix_dir(ancestor.install_prefix, ancestor.name, ancestor.separate_prefixes, decision.deb_name)
@@ -45,8 +56,6 @@ module Relspec
         end
       end
 
-      private
-
       def dependencies_of(package, decisions)
         package.build_dependencies.filter_map do |name|
           decision = decisions[name]
@@ -54,27 +63,23 @@ module Relspec
         end
       end
 
-      # The prefixes of the whole dependency closure, own and inherited,
-      # breadth first from the package (its direct dependencies by name, then
-      # theirs), each once: a dependency's CMake configuration or pkg-config
-      # file names its own dependencies, which the build must find too.
-      def closure_dirs(package, decisions)
-        catalog = @release_catalog.catalog
-        seen = {}
-        queue = package.build_dependencies.dup
-        dirs = []
-        until queue.empty?
-          name = queue.shift
-          next if seen[name]
-
-          seen[name] = true
-          decision = decisions[name]
-          next unless decision && (dir = install_dir_of(decision))
-
-          dirs << dir
-          queue.concat(catalog.package(name).build_dependencies) if catalog.package?(name)
+      # The prefixes of the whole dependency closure, own and inherited, each
+      # once: the direct dependencies by name, then each one's closure in
+      # that order. A dependency's CMake configuration or pkg-config file
+      # names its own dependencies, which the build must find too. Memoised
+      # per target: where a package installs is decided before versions are,
+      # so it does not change while the target's builds are settled.
+      def closure_dirs(target, package, decisions)
+        memo = @closures[target]
+        memo.fetch(package.name) do
+          direct = package.build_dependencies.filter_map { |name| decisions[name] && [name, decisions[name]] }
+          dirs = direct.filter_map { |_, decision| install_dir_of(decision) }
+          direct.each do |name, _|
+            dirs.concat(closure_dirs(target, @release_catalog.catalog.package(name), decisions)) if
+              @release_catalog.catalog.package?(name)
+          end
+          memo[package.name] = dirs.uniq.freeze
         end
-        dirs.uniq
       end
 
       def prefix_dir(install_prefix, release, separate, deb_name)

@@ -8,7 +8,7 @@ module Relspec
     Target = Struct.new(:codename, :arch) do
       def self.parse(text)
         codename, arch = text.to_s.split("/", 2)
-        raise ArgumentError, "a target is written codename/arch (e.g. bionic/amd64), not #{text.inspect}" \
+        raise InvalidOption, "a target is written codename/arch (e.g. bionic/amd64), not #{text.inspect}" \
           unless codename && arch && !codename.empty? && !arch.empty?
 
         new(codename, arch).freeze
@@ -24,8 +24,6 @@ module Relspec
         raise Error, "#{text} is not a target of #{release} (#{targets.join(', ')})" unless found
 
         [found]
-      rescue ArgumentError => e
-        raise Error, e.message
       end
 
       # Every target of an effective spec, sorted.

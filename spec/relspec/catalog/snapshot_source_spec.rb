@@ -56,4 +56,30 @@ RSpec.describe Relspec::Catalog::SnapshotSource do
     expect { Relspec::Catalog::Source.load(path, distributions(%w[bionic focal])) }
       .to raise_error(Relspec::InvalidInput, /no OS dependencies for focal/)
   end
+
+  # Each edit damages one field of a real export; the message must name the
+  # field and its line, never a Ruby exception.
+  {
+    "a package that is a list" => [/^  base\/types:\n/, "  base/types: []\n  x:\n", "packages.base/types must be a mapping"],
+    "a dependency list that is text" => [/^    dependencies:\n(    - .*\n)+/, "    dependencies: base/cmake\n",
+                                         "dependencies must be a list"],
+    "an unknown vcs key" => [/^    vcs:\n/, "    vcs:\n      colour: red\n", "vcs.colour must be one of"],
+    "a build type that is a mapping" => [/^    build_type: .*\n/, "    build_type: { a: 1 }\n", "build_type must be text"]
+  }.each do |what, (pattern, replacement, message)|
+    it "refuses #{what} at its line" do
+      text = described_class.dump(@catalog)
+      damaged = text.sub(pattern, replacement)
+      expect(damaged).not_to eq(text)
+      line = damaged[0, damaged.index(replacement)].count("\n") + 1
+      path = snapshot_file(damaged)
+      error = begin
+        described_class.load(path)
+        nil
+      rescue Relspec::InvalidInput => e
+        e
+      end
+      expect(error&.message).to include(message)
+      expect(error.diagnostics.map { |d| d.location.line }).to include(a_value_between(line - 1, line + 1))
+    end
+  end
 end

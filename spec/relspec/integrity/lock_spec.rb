@@ -83,6 +83,19 @@ RSpec.describe "the lock file" do
     @fixture.standalone("rel", select: ["base/cmake"], targets: "bionic: [amd64]")
   end
 
+  it "compiles with --discard-lock, saying so, and writes a lock that reads again" do
+    File.binwrite(@lock_path, "\x00\xff binary")
+    run = relspec("compile", "specs/rel.yml", "--out", "out", "--discard-lock", chdir: @dir)
+    expect(run.exit_code).to eq(0), run.stderr
+    expect(run.stderr).to include("discarding releases/rel/lock.yml")
+    expect(Relspec::Plan::LockParser.read(@lock_path, release: "rel").packages.keys).to include("base/cmake")
+    again = relspec("compile", "specs/rel.yml", "--out", "out", chdir: @dir)
+    expect(again.exit_code).to eq(0), again.stderr
+    expect(again.stderr).not_to include("discarding")
+  ensure
+    FileUtils.rm_rf(File.join(@dir, "out"))
+  end
+
   it "reads a format 1 lock, whose recorded builds become the history" do
     data = YAML.safe_load(@good)
     digest = data.dig("targets", "bionic/amd64", "base/cmake", "debian_digest")
