@@ -45,7 +45,7 @@ module Relspec
       SigningKey.check(sign_with) if sign_with
       config = RepositoryConfig.new(release: effective.release, targets: all, sign_with: sign_with)
       RepositoryLock.hold(repository, waiting: waiting) do
-        targets = include(repository, config, results, uploads)
+        targets = include_targets(repository, config, results, uploads)
         written, missing = write_osdeps(path, repository, timeout)
         Result.new(release: effective.release, repository: repository, targets: targets, osdeps_written: written,
                    osdeps_missing: missing)
@@ -72,7 +72,7 @@ module Relspec
       nil
     end
 
-    def self.include(repository, config, results, uploads)
+    def self.include_targets(repository, config, results, uploads)
       reprepro = Reprepro.new(repository)
       changed = write_config(repository, config)
       PoolGuard.check(repository, uploads.values.flatten.flat_map(&:items))
@@ -114,6 +114,6 @@ module Relspec
       end
       [written, presence.missing]
     end
-    private_class_method :repository_path, :read_results, :include, :write_config, :write_osdeps
+    private_class_method :repository_path, :read_results, :include_targets, :write_config, :write_osdeps
   end
 end

@@ -14,7 +14,9 @@ require "yaml"
 # installed demo-child package finds its inherited demo-base dependency
 # through env.sh. The specs are the project's own, in a copy of the project.
 RSpec.describe "the example releases, built and published on bookworm" do
-  TARGET = "bookworm/amd64"
+  def target_name
+    "bookworm/amd64"
+  end
 
   before(:all) do
     @dir = Dir.mktmpdir("relspec-example")
@@ -57,22 +59,22 @@ RSpec.describe "the example releases, built and published on bookworm" do
 
   it "builds only what demo-child changes, and apt installs all of demo-child" do
     run!("compile", "specs/demo-base.yml", "--out", "out")
-    base = StandInBuild.new(File.join(@dir, "out"), "demo-base", TARGET, File.join(@dir, "scratch-base"))
+    base = StandInBuild.new(File.join(@dir, "out"), "demo-base", target_name, File.join(@dir, "scratch-base"))
     base.run
-    run!("publish", "specs/demo-base.yml", "--out", "out", "--target", TARGET)
+    run!("publish", "specs/demo-base.yml", "--out", "out", "--target", target_name)
     expect(deb_names("demo-base").size).to eq(7)
 
-    plan = JSON.parse(run!("plan", "specs/demo-child.yml", "--format", "json", "--target", TARGET).stdout)
-    decisions = plan.fetch("targets").fetch(TARGET).transform_values { |entry| entry["decision"] }
+    plan = JSON.parse(run!("plan", "specs/demo-child.yml", "--format", "json", "--target", target_name).stdout)
+    decisions = plan.fetch("targets").fetch(target_name).transform_values { |entry| entry["decision"] }
     expect(decisions.select { |_, decision| decision == "build" }.keys)
       .to contain_exactly("base/types", "drivers/iodrivers_base", "tools/orocos.rb")
     expect(decisions.values.tally).to eq("build" => 3, "inherit" => 4)
 
     run!("compile", "specs/demo-child.yml", "--out", "out")
-    child = StandInBuild.new(File.join(@dir, "out"), "demo-child", TARGET, File.join(@dir, "scratch-child"),
+    child = StandInBuild.new(File.join(@dir, "out"), "demo-child", target_name, File.join(@dir, "scratch-child"),
                              installed: Dir.glob(File.join(base.target_dir, "results", "*", "*.deb")))
     child.run
-    run!("publish", "specs/demo-child.yml", "--out", "out", "--target", TARGET)
+    run!("publish", "specs/demo-child.yml", "--out", "out", "--target", target_name)
     names = deb_names("demo-child")
     expect(names.grep(/\Arock-demo-child-/).size).to eq(3)
     expect(names.grep(/\Arock-demo-base-/).size).to eq(4)

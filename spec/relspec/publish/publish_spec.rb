@@ -9,7 +9,9 @@ require "relspec/publish"
 # build` is merged), published into a fresh reprepro repository and read
 # back by apt-get and by relspec's own planner.
 RSpec.describe "relspec publish" do
-  TARGET = "bookworm/amd64"
+  def target_name
+    "bookworm/amd64"
+  end
 
   before(:all) do
     @dir = Dir.mktmpdir("relspec-publish")
@@ -23,7 +25,7 @@ RSpec.describe "relspec publish" do
     run = relspec("compile", "specs/solo.yml", "--out", "out", chdir: @dir)
     raise run.stderr unless run.status.success?
 
-    @build = StandInBuild.new(File.join(@dir, "out"), "solo", TARGET, File.join(@dir, "scratch"))
+    @build = StandInBuild.new(File.join(@dir, "out"), "solo", target_name, File.join(@dir, "scratch"))
     @build.run
     @results = File.join(@build.target_dir, "build-results.yml")
     @pristine = File.read(@results)
@@ -102,7 +104,7 @@ RSpec.describe "relspec publish" do
     # the release's own repository now holds what it built: a new plan says so
     run = relspec("plan", "specs/solo.yml", "--format", "json", chdir: @dir)
     expect(run.exit_code).to eq(0), run.stderr
-    decisions = JSON.parse(run.stdout).fetch("targets").fetch(TARGET).transform_values { |entry| entry["decision"] }
+    decisions = JSON.parse(run.stdout).fetch("targets").fetch(target_name).transform_values { |entry| entry["decision"] }
     expect(decisions).to eq("base/cmake" => "published", "base/logging" => "published")
   end
 
@@ -172,7 +174,7 @@ RSpec.describe "relspec publish" do
 
   it "says which target was not built" do
     FileUtils.rm_f(@results)
-    run = publish("--target", TARGET)
+    run = publish("--target", target_name)
     expect(run.exit_code).to eq(1)
     expect(run.stderr).to include("bookworm/amd64 of solo has not been built", "run relspec build")
     run = publish
@@ -203,7 +205,7 @@ RSpec.describe "relspec publish" do
     FileUtils.rm_rf(repository)
     # what a publisher killed between reprepro's includedsc and includedeb leaves
     FileUtils.mkdir_p(File.join(repository, "conf"))
-    Relspec::Publish::RepositoryConfig.new(release: "solo", targets: [Relspec::Plan::Target.parse(TARGET)]).files
+    Relspec::Publish::RepositoryConfig.new(release: "solo", targets: [Relspec::Plan::Target.parse(target_name)]).files
                                       .each { |name, text| File.write(File.join(repository, "conf", name), text) }
     dsc = Dir.glob(File.join(@build.target_dir, cmake, "*.dsc")).first
     output, status = Open3.capture2e("reprepro", "-b", repository, "includedsc", "bookworm", dsc)
