@@ -235,4 +235,11 @@ RSpec.describe "relspec publish" do
   ensure
     File.binwrite(deb, original) if original
   end
+
+  it "names the spec line when the release has no repository path" do
+    @fixture.spec("bare", "targets: { bookworm: [amd64] }\nrepository: { url: https://example.org/bare, trusted: true }\n")
+    run = relspec("publish", "specs/bare.yml", chdir: @dir)
+    expect(run.exit_code).to eq(1)
+    expect(run.stderr).to match(%r{specs/bare\.yml:4:1: error\[publish-repository\]: release bare has no repository\.path})
+  end
 end
