@@ -40,4 +40,20 @@ RSpec.describe "the README's example command" do
     expect(output).to include('blacklisted by "base/types" (the project needs the 2020 types API)')
     expect(output).to include("depends on base/types, which is rebuilt because blacklisted by")
   end
+
+  # releases/ is committed (DESIGN §2): the example command, run from
+  # scratch, must give exactly what is committed — the lock identifies the
+  # ancestor by what it provides, not by its freshly dated Release file.
+  # When the example changes, `bin/demo` regenerates releases/ (commit it).
+  it "regenerates releases/ from scratch exactly as committed" do
+    %w[examples/workspace build/repositories].each { |dir| FileUtils.rm_rf(File.join(CliRunner::ROOT, dir)) }
+    output, status = Open3.capture2e(File.join(CliRunner::ROOT, "bin", "demo"))
+    expect(status).to be_success, output
+    diff, diff_status = Open3.capture2e("git", "-C", CliRunner::ROOT, "diff", "--exit-code", "--", "releases/")
+    expect(diff_status).to be_success, "releases/ differs from what is committed (run bin/demo and commit):\n#{diff}"
+    untracked, = Open3.capture2e("git", "-C", CliRunner::ROOT, "status", "--porcelain", "--", "releases/")
+    expect(untracked).to eq("")
+    check = relspec("plan", "--check")
+    expect([check.stdout, check.exit_code]).to eq(["", 0])
+  end
 end

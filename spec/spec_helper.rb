@@ -14,6 +14,9 @@ require_relative "support/release_fixture"
 require_relative "support/gem_builder"
 require_relative "support/stand_in_build"
 require_relative "support/private_apt"
+require_relative "support/git_project"
+require_relative "support/diff_project"
+require_relative "support/large_locks"
 
 # In-process runs cache like CLI runs do: in a folder of the test run.
 ENV["XDG_CACHE_HOME"] = CliRunner::CACHE

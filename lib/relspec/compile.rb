@@ -7,6 +7,7 @@ require_relative "debian/naming"
 require_relative "osdeps/renderer"
 require_relative "yaml/writer"
 require_relative "atomic_file"
+require_relative "temporaries"
 
 module Relspec
   # `relspec compile`: plan the release, then turn every build decision into
@@ -113,6 +114,7 @@ module Relspec
     end
 
     def emit(jobs)
+      sweep_temporaries
       queue = Queue.new
       jobs.each { |job| queue << job }
       written = []
@@ -143,6 +145,16 @@ module Relspec
       raise InvalidInput, errors unless errors.empty?
 
       [written.sort, unchanged.sort]
+    end
+
+    # Leftovers of compiles that were killed: removed before this one
+    # writes, so that the tree ends as a clean compile's would.
+    def sweep_temporaries
+      release = File.join(@out, @effective.release)
+      orig = File.join(release, ".orig")
+      [*Dir.glob(File.join(release, "*/")), *Dir.glob(File.join(orig, "*/")), orig].each do |dir|
+        Temporaries.sweep(dir)
+      end
     end
 
     def next_job(queue)

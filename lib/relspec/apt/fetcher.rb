@@ -2,6 +2,7 @@
 
 require "net/http"
 require "openssl"
+require "timeout"
 require "uri"
 
 module Relspec
@@ -16,6 +17,13 @@ module Relspec
       RETRIES = 3
       BACKOFF = 0.2
       REDIRECTS = 3
+      # --timeout bounds each wait for the server; a download as a whole,
+      # with its retries, gets this many times that: a server dripping one
+      # byte per second never makes relspec wait forever (10 s → 2 min).
+      DEADLINE_FACTOR = 12
+      # What is read of a file whose size nothing else bounds (gems, Release
+      # files are capped lower by their callers): an endless body stops here.
+      MAX_BYTES = 256 * 1024 * 1024
 
       attr_reader :base
 
@@ -35,8 +43,14 @@ module Relspec
       end
 
       # The bytes of +path+ below the base, or nil if there is no such file.
-      def fetch(path)
-        remote? ? fetch_http(url_of(path)) : fetch_file(File.join(local_base, path))
+      # More than +max_bytes+ is a Failure: nothing past it is read.
+      def fetch(path, max_bytes: MAX_BYTES)
+        remote? ? fetch_http(url_of(path), max_bytes) : fetch_file(File.join(local_base, path), max_bytes)
+      end
+
+      # The overall time one download may take, retries included.
+      def deadline
+        @timeout * DEADLINE_FACTOR
       end
 
       private
@@ -45,7 +59,12 @@ module Relspec
         @base.delete_prefix("file://")
       end
 
-      def fetch_file(path)
+      # Only regular files: a FIFO would block forever, /dev/zero never end.
+      def fetch_file(path, max_bytes)
+        stat = File.stat(path)
+        raise Failure, "cannot read #{path}: not a regular file (#{stat.ftype})" unless stat.file?
+        raise Failure, "#{path} is larger than #{max_bytes} bytes, #{limit_reason(max_bytes)}" if stat.size > max_bytes
+
         File.binread(path)
       rescue Errno::ENOENT, Errno::ENOTDIR
         nil
@@ -53,19 +72,47 @@ module Relspec
         raise Failure, "cannot read #{path}: #{e.message}"
       end
 
-      def fetch_http(url)
+      # Raised when a download passed its overall deadline.
+      class DeadlineExceeded < StandardError; end
+
+      def fetch_http(url, max_bytes)
+        started = now
         attempt = 0
         begin
           attempt += 1
-          get(URI(url))
+          remaining = deadline - (now - started)
+          raise DeadlineExceeded if remaining <= 0
+
+          Timeout.timeout(remaining, DeadlineExceeded) { get(URI(url), max_bytes) }
         rescue OpenSSL::SSL::SSLError, Net::HTTPBadResponse, Net::ProtocolError => e
           raise Failure, "#{url}: #{e.message}"
+        rescue DeadlineExceeded
+          raise Failure, "#{url}: not complete after #{elapsed(started)} s, the deadline of a download " \
+                         "(#{DEADLINE_FACTOR} × --timeout #{@timeout}; after #{attempts(attempt)})"
         rescue Net::OpenTimeout, Net::ReadTimeout, SystemCallError, SocketError, IOError, RetryableAnswer => e
-          raise Failure, "#{url}: #{describe(e)} (after #{attempt} attempts)" if attempt >= @retries
+          if attempt >= @retries
+            raise Failure, "#{url}: #{describe(e)} (after #{attempts(attempt)}, #{elapsed(started)} s in all)"
+          end
 
           sleep(BACKOFF * attempt)
           retry
         end
+      end
+
+      def now
+        Process.clock_gettime(Process::CLOCK_MONOTONIC)
+      end
+
+      def elapsed(started)
+        format("%.1f", now - started)
+      end
+
+      def attempts(count)
+        count == 1 ? "1 attempt" : "#{count} attempts"
+      end
+
+      def limit_reason(max_bytes)
+        max_bytes == MAX_BYTES ? "the most relspec downloads (Fetcher::MAX_BYTES)" : "the most this file can hold"
       end
 
       # A 5xx answer: the server may recover.
@@ -73,32 +120,56 @@ module Relspec
 
       # Follows a few redirects (gem servers often send downloads to storage
       # elsewhere), to http(s) only.
-      def get(uri, redirects = REDIRECTS)
+      def get(uri, max_bytes, redirects = REDIRECTS)
         Net::HTTP.start(uri.host, uri.port, use_ssl: uri.scheme == "https", open_timeout: @timeout,
                                             read_timeout: @timeout, ssl_timeout: @timeout) do |http|
-          response = http.request(Net::HTTP::Get.new(uri))
-          case response
-          when Net::HTTPSuccess then response.body.b
-          when Net::HTTPNotFound, Net::HTTPGone then nil
-          when Net::HTTPServerError then raise RetryableAnswer, "HTTP #{response.code} #{response.message}"
-          when Net::HTTPRedirection then follow(uri, response, redirects)
-          else raise Failure, "#{uri}: HTTP #{response.code} #{response.message}"
+          # Net::HTTP would repeat a timed-out GET once on its own: attempts
+          # are counted here, so that the message says how many were made.
+          http.max_retries = 0
+          # `return` leaves before Net::HTTP reads what is left of the body
+          # (it would read an endless 404 body to the end).
+          http.request(Net::HTTP::Get.new(uri)) do |response|
+            return answer(uri, response, max_bytes, redirects)
           end
         end
       end
 
-      def follow(uri, response, redirects)
+      def answer(uri, response, max_bytes, redirects)
+        case response
+        when Net::HTTPSuccess then read_body(uri, response, max_bytes)
+        when Net::HTTPNotFound, Net::HTTPGone then nil
+        when Net::HTTPServerError then raise RetryableAnswer, "HTTP #{response.code} #{response.message}"
+        when Net::HTTPRedirection then follow(uri, response, max_bytes, redirects)
+        else raise Failure, "#{uri}: HTTP #{response.code} #{response.message}"
+        end
+      end
+
+      # The body, read in pieces so that an endless one stops at +max_bytes+.
+      def read_body(uri, response, max_bytes)
+        too_large = "#{uri}: the server sends more than #{max_bytes} bytes, #{limit_reason(max_bytes)}; stopped"
+        raise Failure, too_large if response.content_length && response.content_length > max_bytes
+
+        body = String.new(capacity: [response.content_length || 0, max_bytes].min, encoding: Encoding::BINARY)
+        response.read_body do |chunk|
+          raise Failure, too_large if body.bytesize + chunk.bytesize > max_bytes
+
+          body << chunk
+        end
+        body
+      end
+
+      def follow(uri, response, max_bytes, redirects)
         target = response["location"] && uri.merge(response["location"])
         unless target && %w[http https].include?(target.scheme) && redirects.positive?
           raise Failure, "#{uri}: HTTP #{response.code} redirect to #{response['location'].inspect} not followed"
         end
 
-        get(target, redirects - 1)
+        get(target, max_bytes, redirects - 1)
       end
 
       def describe(error)
         case error
-        when Net::OpenTimeout, Net::ReadTimeout then "no answer within #{@timeout} s"
+        when Net::OpenTimeout, Net::ReadTimeout then "no answer within #{@timeout} s per read"
         else error.message
         end
       end

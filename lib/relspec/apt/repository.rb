@@ -25,6 +25,12 @@ module Relspec
       # was published there yet.
       class Missing < Error; end
 
+      # InRelease/Release of the largest archives (Ubuntu, Debian) are below
+      # 300 KiB, their signatures below 10 KiB: a server sending more is not
+      # serving a Release file (docs/limits.md).
+      MAX_RELEASE_BYTES = 16 * 1024 * 1024
+      MAX_SIGNATURE_BYTES = 1024 * 1024
+
       COMPRESSIONS = [["Packages.xz", :xz], ["Packages.gz", :gzip], ["Packages", :none]].freeze
 
       attr_reader :fetcher
@@ -91,12 +97,12 @@ module Relspec
 
       def read_release(codename)
         base = "dists/#{codename}"
-        in_release = @fetcher.fetch("#{base}/InRelease")
+        in_release = @fetcher.fetch("#{base}/InRelease", max_bytes: MAX_RELEASE_BYTES)
         text, raw =
           if in_release
             [clearsigned_content(in_release, "#{url}/#{base}/InRelease"), in_release]
           else
-            plain = @fetcher.fetch("#{base}/Release")
+            plain = @fetcher.fetch("#{base}/Release", max_bytes: MAX_RELEASE_BYTES)
             raise Missing, "#{url} has no distribution #{codename} (no #{base}/InRelease or Release)" unless plain
 
             [detached_content(plain, base), plain]
@@ -134,8 +140,9 @@ module Relspec
         return content.force_encoding(Encoding::UTF_8) if @trusted && !@keyring
         raise Error, "#{url}/#{base}/Release is unsigned: set keyring:, or trusted: true" unless @keyring
 
-        signature = @fetcher.fetch("#{base}/Release.gpg")
+        signature = @fetcher.fetch("#{base}/Release.gpg", max_bytes: MAX_SIGNATURE_BYTES)
         raise Error, "#{url}/#{base}/Release has no Release.gpg signature" unless signature
+        raise Error, "#{url}/#{base}/Release.gpg is empty: the repository must be signed again" if signature.empty?
 
         Signature.verify_detached(content, signature, @keyring).force_encoding(Encoding::UTF_8)
       rescue Signature::Invalid => e
@@ -164,7 +171,8 @@ module Relspec
         return cached if cached && Digest::SHA256.hexdigest(cached) == checksum.sha256
 
         where = "#{url}/dists/#{codename}/#{path}"
-        bytes = @fetcher.fetch("dists/#{codename}/#{path}")
+        # the Release file says how large the index is: never read past that
+        bytes = @fetcher.fetch("dists/#{codename}/#{path}", max_bytes: checksum.size)
         raise MissingIndex, "#{where} is listed in the Release file but missing" unless bytes
 
         verify(bytes, checksum, where)

@@ -35,14 +35,41 @@ module Relspec
         content
       end
 
+      ARMOR = "-----BEGIN PGP PUBLIC KEY BLOCK-----"
+
       def run_gpgv(keyring, *args)
-        _out, err, status = Open3.capture3("gpgv", "--keyring", File.expand_path(keyring), *args)
-        return if status.success?
+        Dir.mktmpdir("relspec-keyring") do |dir|
+          _out, err, status = Open3.capture3("gpgv", "--keyring", binary_keyring(keyring, dir), *args)
+          return if status.success?
+
+          fail_with(err)
+        end
+      rescue Errno::ENOENT
+        raise Invalid, "gpgv is not installed (Debian package gpgv)"
+      end
+
+      # gpgv reads binary keyrings only and says "No public key" for an
+      # armored one (keys/*.asc): those are dearmored into +dir+ first.
+      def binary_keyring(keyring, dir)
+        path = File.expand_path(keyring)
+        head = File.file?(path) ? File.open(path, "rb") { |file| file.read(256) }.to_s : ""
+        return path unless head.lstrip.start_with?(ARMOR)
+
+        binary = File.join(dir, "keyring.gpg")
+        _out, err, status = Open3.capture3("gpg", "--homedir", dir, "--batch", "--quiet", "--dearmor",
+                                          "--output", binary, path)
+        raise Invalid, "#{keyring}: cannot read the armored keyring: #{err.strip}" unless status.success?
+
+        binary
+      rescue Errno::ENOENT
+        raise Invalid, "#{keyring} is an armored keyring and gpg (to dearmor it) is not installed: " \
+                       "give a binary keyring (gpg --dearmor)"
+      end
+
+      def fail_with(err)
 
         reason = err.lines.grep(/BAD signature|Can't check signature|no valid OpenPGP data|keyblock resource/).first
         raise Invalid, (reason || err.lines.last || "gpgv failed").strip.sub(/\Agpgv: /, "")
-      rescue Errno::ENOENT
-        raise Invalid, "gpgv is not installed (Debian package gpgv)"
       end
 
       # The signed text of a clearsigned message, without checking anything.

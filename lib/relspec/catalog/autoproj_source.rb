@@ -63,8 +63,15 @@ module Relspec
 
       # autoproj's own messages go to stderr while it loads: relspec's
       # stdout carries data (catalog export writes the snapshot there).
+      # The require stays out of the method that rescues AutoprojLoader's
+      # errors: an interrupt while autoproj loads (it takes a while) would
+      # otherwise evaluate an undefined AutoprojLoader and end as NameError.
       def run_loader
         require_relative "autoproj_loader"
+        load_quietly
+      end
+
+      def load_quietly
         saved = $stdout
         $stdout = $stderr
         AutoprojLoader.load(File.expand_path(@root), operating_systems)

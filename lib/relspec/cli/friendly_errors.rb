@@ -30,16 +30,29 @@ module Relspec
         stderr.puts("relspec: error: #{e.message.sub(/ @ \w+/, '')}")
         EXIT_USER_ERROR
       rescue Interrupt
-        stderr.puts("relspec: interrupted")
-        EXIT_INTERRUPTED
+        interrupted(stderr)
       rescue Errno::EPIPE
         0
       rescue StandardError => e
+        return interrupted(stderr) if interrupted?(e)
         raise if debug
 
         stderr.puts("relspec: internal error: #{e.class}: #{e.message}")
         stderr.puts("This is a bug in relspec; run again with --debug to see where it happened.")
         EXIT_BUG
+      end
+
+      def self.interrupted(stderr)
+        stderr.puts("relspec: interrupted")
+        EXIT_INTERRUPTED
+      end
+
+      # An error raised while an interrupt was being handled (a rescue clause
+      # naming a class still being loaded) is still the interrupt.
+      def self.interrupted?(error)
+        cause = error.cause
+        cause = cause.cause until cause.nil? || cause.is_a?(Interrupt)
+        !cause.nil?
       end
     end
 

@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require "thor"
+require_relative "checked_options"
 require_relative "../version"
 require_relative "catalog_commands"
 require_relative "osdeps_commands"
@@ -11,6 +12,8 @@ module Relspec
     # only declares options and hands them over. Command classes are required
     # when their command runs, so that each command loads only what it needs.
     class Main < Thor
+      include CheckedOptions
+
       package_name "relspec"
 
       def self.exit_on_failure?
@@ -56,7 +59,7 @@ module Relspec
                                out: $stdout, err: $stderr).call
       end
 
-      desc "plan SPEC", "Decide per target what the release inherits, builds or has published, and why"
+      desc "plan SPEC | --check [SPEC...]", "Decide per target what the release inherits, builds or has published, and why"
       long_desc <<~TEXT
         Reads the spec hierarchy, the workspace (or catalog snapshot) and what the
         ancestors' apt repositories hold, and prints per target how many packages
@@ -68,7 +71,16 @@ module Relspec
       option :target, type: :string, desc: "Only this target (codename/arch)"
       option :timeout, type: :numeric, default: 10, desc: "HTTP timeout in seconds"
       option :discard_lock, type: :boolean, default: false, desc: DISCARD_LOCK
-      def plan(path)
+      option :check, type: :boolean, default: false,
+                     desc: "Exit 1 when a committed lock is out of date with its spec, workspace or ancestors (default: every spec in specs/)"
+      def plan(*paths)
+        if options[:check]
+          require_relative "plan_check_command"
+          return finish(PlanCheckCommand.new(paths: paths, timeout: options[:timeout], out: $stdout).call)
+        end
+        raise Error, "relspec plan needs one SPEC (or --check [SPEC...])" unless paths.size == 1
+
+        path = paths.first
         require_relative "plan_command"
         finish PlanCommand.new(path: path, format: options[:format], write: options[:write], target: options[:target],
                                timeout: options[:timeout], out: $stdout, err: $stderr,
@@ -152,6 +164,40 @@ module Relspec
         finish WhyCommand.new(path: path, package: package, target: options[:target], timeout: options[:timeout],
                               out: $stdout).call
       end
+
+      desc "diff OLD NEW | --base REF [SPEC...]", "What a change does to each release: per target, what is added, removed, rebuilt, and why"
+      long_desc <<~TEXT
+        OLD and NEW are lock files, release folders (releases/<release>/) or specs (a
+        spec is planned first). With --base REF, every release of specs/ (or those of
+        the specs given) as committed at REF is compared with the working tree; REF is
+        read with git, the working tree is not touched. Prints nothing when nothing
+        differs. --exit-code: exit 0 without differences, 1 with, 2 on an error.
+        --fail-on-rebuilds N: exit 1 when more than N packages are rebuilt.
+        See docs/diff.md (the JSON schema) and docs/ci.md.
+      TEXT
+      option :base, type: :string, desc: "Compare the working tree against this git ref (e.g. origin/main)"
+      option :format, enum: %w[text markdown json], default: "text", desc: "Output format"
+      option :exit_code, type: :boolean, default: false, desc: "Exit 1 when something differs, 2 on an error"
+      option :fail_on_rebuilds, type: :numeric, desc: "Exit 1 when more than this many packages are rebuilt"
+      option :color, type: :boolean, desc: "Colour the text format (default: when writing to a terminal)"
+      option :timeout, type: :numeric, default: 10, desc: "HTTP timeout in seconds (specs are planned)"
+      def diff(*paths)
+        require_relative "diff_command"
+        require_relative "friendly_errors"
+        status = 0
+        failed = FriendlyErrors.wrap(stderr: $stderr, debug: options[:debug]) do
+          status = DiffCommand.new(paths: paths, base: options[:base], format: options[:format],
+                                   exit_code: options[:exit_code], fail_on_rebuilds: options[:fail_on_rebuilds]&.to_i,
+                                   timeout: options[:timeout], out: $stdout, err: $stderr,
+                                   color: options.fetch(:color) { $stdout.tty? }).call
+        end
+        # With --exit-code, 1 means "differences": an error must say 2.
+        failed = DIFF_ERROR if failed.nonzero? && options[:exit_code]
+        finish(failed.zero? ? status : failed)
+      end
+
+      # `diff --exit-code` status of an error (as `diff` and `git diff`).
+      DIFF_ERROR = 2
 
       desc "catalog SUBCOMMAND", "The package database of a workspace (export, show)"
       subcommand "catalog", CatalogCommands

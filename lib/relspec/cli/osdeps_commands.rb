@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require "thor"
+require_relative "checked_options"
 require "fileutils"
 require_relative "../atomic_file"
 require_relative "../error"
@@ -10,6 +11,8 @@ module Relspec
     # `relspec osdeps …`: the files that let autoproj workspaces use a
     # release's binaries (rock-osdeps package set format).
     class OsdepsCommands < Thor
+      include CheckedOptions
+
       namespace "osdeps"
 
 

@@ -22,9 +22,33 @@ module Relspec
 
       attr_reader :dir
 
+      # A patch name quilt's series file can carry: one token per line, no
+      # comment sign, nothing that reads as an option.
+      PATCH_NAME = /\A[A-Za-z0-9][A-Za-z0-9._+~=-]*\.patch\z/
+
       def self.for(root, package_name, arch: nil)
+        refuse_linked_folders(root, package_name)
         new(File.join(root, "overlays", package_name), arch)
       end
+
+      # overlays/<package> (each of its folders) must be a real folder of the
+      # project: a link there would carry files from anywhere into the package.
+      def self.refuse_linked_folders(root, package_name)
+        package_name.split("/").reduce(File.join(root, "overlays")) do |path, part|
+          path = File.join(path, part)
+          stat = File.lstat(path)
+          if stat.symlink?
+            message = "overlays/#{package_name} is a link (to #{File.readlink(path)}); an overlay must be a folder of the project"
+            raise InvalidInput, [Diagnostic.error("overlay", message, location: Location.file_only(path))]
+          end
+          return unless stat.directory?
+
+          path
+        rescue Errno::ENOENT, Errno::ENOTDIR
+          return
+        end
+      end
+      private_class_method :refuse_linked_folders
 
       def initialize(dir, arch = nil)
         @dir = dir
@@ -50,7 +74,9 @@ module Relspec
 
       # [[name, content], …] in name order, each with a DEP-3 header.
       def patches(package_name)
-        layered("patches").select { |name, _| name.end_with?(".patch") && !name.include?("/") }.sort.map do |name, content|
+        found = layered("patches").select { |name, _| name.end_with?(".patch") && !name.include?("/") }
+        found.each_key { |name| check_patch_name(name) }
+        found.sort.map do |name, content|
           [name, content.match?(/\A(Description|Subject|From):/) ? content : "Description: #{name} (relspec overlay of #{package_name})\n---\n#{content}"]
         end
       end
@@ -87,6 +113,20 @@ module Relspec
           result[relative] = File.binread(path)
         end
         result.sort.to_h
+      end
+
+      def check_patch_name(name)
+        return if PATCH_NAME.match?(name)
+
+        raise InvalidInput, [Diagnostic.error("overlay", "patch name #{name.inspect} cannot be listed in debian/patches/series",
+                                              location: Location.file_only(patch_path(name)),
+                                              hint: "rename it with letters, digits and . _ + ~ = - only " \
+                                                    "(no spaces, newlines or #), e.g. 01-fix-build.patch")]
+      end
+
+      def patch_path(name)
+        common = File.join(@dir, "patches", name)
+        @arch && !File.exist?(common) ? File.join(@dir, "@#{@arch}", "patches", name) : common
       end
 
       def substitute(content, substitutions)

@@ -7,8 +7,11 @@ require_relative "orig_tarball"
 require_relative "debian_dir"
 require_relative "overlay"
 require_relative "overlay_patch"
+require_relative "emitted"
+require_relative "orig_cache"
 require_relative "naming"
 require_relative "../atomic_file"
+require_relative "../temporaries"
 require_relative "../diagnostic"
 require_relative "../error"
 
@@ -63,15 +66,15 @@ module Relspec
 
       # Writes into +dir+ unless it already holds these files. True if written.
       def emit(dir)
-        return false if File.file?(File.join(dir, STAMP)) && File.read(File.join(dir, STAMP)) == stamp &&
-                        File.file?(File.join(dir, dsc_name))
+        return false if Emitted.new(dir, STAMP).vouches_for?(stamp, dsc_name)
 
         parent = File.dirname(dir)
         FileUtils.mkdir_p(parent)
-        work = Dir.mktmpdir(".#{source}-", parent)
+        work = Temporaries.path(parent, source)
+        Dir.mkdir(work, 0o700)
         begin
           build_in(work)
-          File.write(File.join(work, "out", STAMP), stamp)
+          Emitted.new(File.join(work, "out"), STAMP).record(stamp)
           File.chmod(0o755, File.join(work, "out"))
           FileUtils.rm_rf(dir)
           File.rename(File.join(work, "out"), dir)
@@ -105,12 +108,12 @@ module Relspec
         # a gem's tarball is its own bytes: a different .gem is another cache entry
         key = gem ? gem.sha256[0, 16] : "upstream"
         path = File.join(@orig_cache, key, name)
-        return path if File.file?(path)
+        return path if OrigCache.intact?(path)
 
         FileUtils.mkdir_p(File.dirname(path))
-        temporary = "#{path}.#{Process.pid}.#{Thread.current.object_id}.tmp"
+        temporary = Temporaries.path(File.dirname(path), name)
         write_orig(temporary)
-        File.rename(temporary, path)
+        OrigCache.store(temporary, path)
         path
       ensure
         File.unlink(temporary) if temporary && File.exist?(temporary)

@@ -1,5 +1,6 @@
 # frozen_string_literal: true
 
+require "digest"
 require_relative "../apt/repository"
 require_relative "../diagnostic"
 require_relative "../error"
@@ -9,6 +10,12 @@ module Relspec
     # What each ancestor's repository holds for each target: one Release read
     # per ancestor and codename, one Packages index per ancestor and target —
     # never one request per package.
+    #
+    # An ancestor is identified in the lock by a digest of what it provides
+    # (the sorted name, version and architecture of every index entry read
+    # for a codename), not by its Release file: a Release file carries a date,
+    # so re-exporting or rebuilding a repository with the same content would
+    # otherwise change every child's lock.
     class Inventory
       attr_reader :release_digests
 
@@ -16,7 +23,6 @@ module Relspec
       # repository that cannot be read.
       def self.read(ancestors, targets)
         indices = {}
-        digests = {}
         problems = []
         ancestors.each do |ancestor|
           targets.each do |target|
@@ -28,7 +34,6 @@ module Relspec
             end
             begin
               repository = ancestor.repository
-              digests[[ancestor.name, target.codename]] = repository.release(target.codename).sha256
               indices[[ancestor.name, target]] = repository.packages(target.codename, target.arch)
             rescue Apt::Repository::Error => e
               problems << Diagnostic.error("ancestor-repository", "ancestor #{ancestor.name}: #{e.message}",
@@ -40,7 +45,17 @@ module Relspec
         end
         raise InvalidInput, problems unless problems.empty?
 
-        new(indices, digests)
+        new(indices, content_digests(indices))
+      end
+
+      # [ancestor, codename] => SHA256 over "arch name version" lines, sorted.
+      def self.content_digests(indices)
+        indices.group_by { |(ancestor, target), _| [ancestor, target.codename] }.to_h do |key, entries|
+          lines = entries.flat_map do |(_, target), index|
+            index.entries.each_value.map { |entry| "#{target.arch} #{entry.name} #{entry.version}\n" }
+          end
+          [key, Digest::SHA256.hexdigest(lines.sort.join)]
+        end
       end
 
       def self.no_repository(ancestor)

@@ -10,7 +10,7 @@ module Relspec
       # +targets+: Target => {package name => Decision}; +unavailable+:
       # Target => {package name => Cause} for the selected packages that
       # cannot exist there; +packages+: package name => source record;
-      # +release_digests+: [ancestor, codename] => SHA256 of the Release file read;
+      # +release_digests+: [ancestor, codename] => SHA256 of what the ancestor provides there (Inventory);
       def initialize(release:, targets:, packages:, release_digests:, warnings:, notes:, unavailable: {})
         @release = release
         @targets = targets.freeze

@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require_relative "spec_file"
+require_relative "names"
 
 module Relspec
   module Spec
@@ -32,8 +33,9 @@ module Relspec
         dir == "." ? file : File.join(dir, file)
       end
 
+      # Names that are not release names never become paths (`../x`).
       def include?(name)
-        File.file?(path_for(name))
+        Names.release?(name) && File.file?(path_for(name))
       end
 
       # The spec file of release +name+, or nil when specs/ has none.

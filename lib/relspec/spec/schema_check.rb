@@ -63,11 +63,21 @@ module Relspec
           if Schema::CHECKED_SEPARATELY.include?(key) && value.is_a?(Hash)
             [key, {}]
           elsif key == "blacklist" && value.is_a?(Array)
-            [key, value.map { |entry| entry.is_a?(Hash) ? {} : entry }]
+            [key, value.map { |entry| entry.is_a?(Hash) ? {} : flat(entry) }]
+          elsif key == "select" && value.is_a?(Array)
+            [key, value.map { |entry| flat(entry) }]
           else
             [key, value]
           end
         end
+      end
+
+      # With validate_keys, dry-schema reads a list inside a list of names as
+      # a mapping and reports a key path that names nothing (`select: [[x]]`
+      # passed). Lists and mappings become nil, which it reports as a wrong
+      # type at the entry itself; the message still shows the real value.
+      def flat(entry)
+        entry.is_a?(Array) || entry.is_a?(Hash) ? nil : entry
       end
 
       def check_entries(data)

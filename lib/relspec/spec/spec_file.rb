@@ -3,6 +3,7 @@
 require_relative "../yaml/located_document"
 require_relative "schema_check"
 require_relative "file_rules"
+require_relative "names"
 
 module Relspec
   module Spec
@@ -50,7 +51,9 @@ module Relspec
       def parents
         parent = value(["parent"])
         list = parent.is_a?(Array) ? parent : [parent]
-        list.select { |name| name.is_a?(String) }.uniq
+        # Only valid release names: a name becomes a path (specs/<name>.yml)
+        # and `../../elsewhere` must never be opened (rules/parents reports it).
+        list.select { |name| Names.release?(name) }.uniq
       end
 
       # All values, with text-looking numbers kept as text (see TEXT_PATHS).

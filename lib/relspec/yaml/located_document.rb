@@ -3,6 +3,8 @@
 require "psych"
 require_relative "../location"
 require_relative "../diagnostic"
+require_relative "limits"
+require_relative "text_encoding"
 
 module Relspec
   module Yaml
@@ -20,15 +22,53 @@ module Relspec
 
       attr_reader :file, :data, :diagnostics
 
+      # Raised inside the walk when a limit is passed; the document then
+      # holds that one diagnostic and no data.
+      class LimitExceeded < StandardError
+        attr_reader :diagnostic
+
+        def initialize(diagnostic)
+          @diagnostic = diagnostic
+          super(diagnostic.to_s)
+        end
+      end
+
       # +file+ is how the file is named in messages (as the user gave it).
+      # Only regular files are read (a FIFO would block forever, a link to
+      # /dev/zero never end), and never more than Limits::MAX_BYTES.
       def self.load(file)
-        parse(File.read(file), file: file)
+        refusal = refuse_unreadable(file)
+        return failed(file, refusal) if refusal
+
+        parse(File.open(file, "rb") { |io| io.read(Limits::MAX_BYTES + 1) } || "", file: file)
       rescue SystemCallError => e
         failed(file, Diagnostic.error("unreadable-file", "cannot read the file: #{e.message.sub(/ @ .*/, '')}",
                                       location: Location.file_only(file)))
       end
 
+      def self.refuse_unreadable(file)
+        stat = File.stat(file)
+        if !stat.file?
+          Diagnostic.error("unreadable-file", "not a regular file (#{stat.ftype})", location: Location.file_only(file),
+                                                                                    hint: "give a plain YAML file")
+        elsif stat.size > Limits::MAX_BYTES
+          too_large(file)
+        end
+      end
+      private_class_method :refuse_unreadable
+
+      def self.too_large(file)
+        Diagnostic.error("yaml-limit", "the file is larger than #{Limits::MAX_BYTES / (1024 * 1024)} MiB",
+                         location: Location.file_only(file), hint: "relspec reads YAML files up to this size")
+      end
+      private_class_method :too_large
+
       def self.parse(text, file:)
+        return failed(file, too_large(file)) if text.bytesize > Limits::MAX_BYTES
+
+        text, refusal = TextEncoding.decode(text, file: file)
+        return failed(file, refusal) if refusal
+
         stream = Psych.parse_stream(text, filename: file)
         new(file, stream.children).freeze
       rescue Psych::SyntaxError => e
@@ -51,6 +91,9 @@ module Relspec
         @key_positions = {}
         @raw = {}
         @anchors = {}
+        @anchor_sizes = {}
+        @nodes = 0
+        @alias_nodes = 0
         @diagnostics = []
         if documents.size > 1
           node = documents[1]
@@ -58,8 +101,11 @@ module Relspec
                                            location: at(node), hint: "keep one release per file; remove the extra `---`")
         end
         root = documents.first&.root
-        @data = root ? convert(root, []) : nil
+        @data = root ? convert(root, [], 1) : nil
         @diagnostics.freeze
+      rescue LimitExceeded => e
+        @data = nil
+        @diagnostics = [e.diagnostic].freeze
       end
 
       def ok?
@@ -105,22 +151,52 @@ module Relspec
         Location.at(file, node.start_line + 1, node.start_column + 1)
       end
 
-      def convert(node, path)
+      def convert(node, path, depth)
         path = path.freeze
         @positions[path] = at(node)
+        check_depth(node, depth)
         check_tag(node)
+        nodes_before = @nodes
+        @nodes += 1
         value =
           case node
-          when Psych::Nodes::Mapping then convert_mapping(node, path)
-          when Psych::Nodes::Sequence then node.children.each_with_index.map { |child, i| convert(child, path + [i]) }.freeze
+          when Psych::Nodes::Mapping then convert_mapping(node, path, depth)
+          when Psych::Nodes::Sequence
+            node.children.each_with_index.map { |child, i| convert(child, path + [i], depth + 1) }.freeze
           when Psych::Nodes::Scalar then convert_scalar(node, path)
           when Psych::Nodes::Alias then resolve_alias(node)
           end
-        @anchors[node.anchor] = value if node.respond_to?(:anchor) && node.anchor
+        remember_anchor(node, value, @nodes - nodes_before)
         value
       end
 
-      def convert_mapping(node, path)
+      def remember_anchor(node, value, size)
+        return unless node.respond_to?(:anchor) && node.anchor
+
+        @anchors[node.anchor] = value
+        @anchor_sizes[node.anchor] = size
+      end
+
+      def check_depth(node, depth)
+        return if depth <= Limits::MAX_DEPTH
+
+        raise LimitExceeded, Diagnostic.error("yaml-limit", "values nested deeper than #{Limits::MAX_DEPTH} levels",
+                                              location: at(node), hint: "a release spec nests a few levels; " \
+                                                                        "look for unclosed or repeated brackets")
+      end
+
+      # An alias stands for a copy of its anchor's whole tree: count those
+      # nodes, so that aliases of aliases cannot multiply into millions.
+      def count_alias(node)
+        @alias_nodes += @anchor_sizes.fetch(node.anchor, 1)
+        @nodes += @anchor_sizes.fetch(node.anchor, 1)
+        return if @alias_nodes <= Limits::MAX_ALIAS_NODES
+
+        raise LimitExceeded, Diagnostic.error("yaml-limit", "aliases expand to more than #{Limits::MAX_ALIAS_NODES} values",
+                                              location: at(node), hint: "write the values out or use fewer nested aliases")
+      end
+
+      def convert_mapping(node, path, depth)
         result = {}
         first_seen = {}
         node.children.each_slice(2) do |key_node, value_node|
@@ -135,7 +211,7 @@ module Relspec
           end
           first_seen[key] = key_node.start_line + 1
           @key_positions[key_path] = at(key_node)
-          result[key] = convert(value_node, key_path)
+          result[key] = convert(value_node, key_path, depth + 1)
         end
         result.freeze
       end
@@ -160,6 +236,7 @@ module Relspec
       end
 
       def resolve_alias(node)
+        count_alias(node)
         return @anchors[node.anchor] if @anchors.key?(node.anchor)
 
         @diagnostics << Diagnostic.error("yaml-syntax", "unknown alias *#{node.anchor}", location: at(node))

@@ -81,7 +81,7 @@ RSpec.describe "relspec plan with broken ancestor repositories" do
     @server.fail(%r{^/failing/}, 500)
     expect(plan_child_of("failing", %(url: "#{@server.url}/failing")))
       .to include("ancestor failing: #{@server.url}/failing/dists/bionic/InRelease: HTTP 500 Internal Server Error " \
-                  "(after 3 attempts)")
+                  "(after 3 attempts, ")
   end
 
   it "names the URL of a server that stalls" do

@@ -1,0 +1,42 @@
+# frozen_string_literal: true
+
+require_relative "snapshot"
+require_relative "../plan/lock_parser"
+
+module Relspec
+  module Diff
+    # The one place where the diff reads a lock: a Plan::Lock (read strictly
+    # by Plan::LockParser, or computed by a plan) becomes the diff's own
+    # Snapshot. When the lock changes, only this file follows it.
+    module LockView
+      module_function
+
+      # A lock file's text (+source+ names it in messages) as a Snapshot; a
+      # lock relspec cannot read is a LockError naming file:line.
+      def parse(text, source:)
+        snapshot(Plan::LockParser.parse(text, file: source, release: nil), source: source)
+      end
+
+      # +lock+: a Plan::Lock; +source+: where it was read.
+      def snapshot(lock, source:)
+        Snapshot.new(release: lock.release, source: source, spec_digest: lock.spec_digest,
+                     ancestors: lock.ancestors.transform_values { |codenames| codenames.dup.freeze }.freeze,
+                     packages: lock.packages.transform_values { |record| source_of(record) }.freeze,
+                     targets: lock.targets.transform_values { |entries| decisions(entries) }.freeze,
+                     spec: nil).freeze
+      end
+
+      def decisions(entries)
+        entries.transform_values do |entry|
+          Decision.new(kind: entry.decision, deb: entry.deb, version: entry.version, from: entry.from,
+                       causes: Array(entry.causes).freeze).freeze
+        end.freeze
+      end
+
+      def source_of(record)
+        PackageSource.new(url: record["url"], commit: record["commit"], commit_time: record["commit_time"],
+                          version: record["version"]).freeze
+      end
+    end
+  end
+end

@@ -1,0 +1,116 @@
+# frozen_string_literal: true
+
+require_relative "snapshot"
+require_relative "target_diff"
+require_relative "ancestor_change"
+require_relative "spec_changes"
+require_relative "commit_counter"
+
+module Relspec
+  module Diff
+    # The diff of one release between two Snapshots: per target the
+    # decision changes, the ancestors that changed, and the spec keys that
+    # changed linked to the decisions they caused.
+    class ReleaseDiff
+      attr_reader :old, :new, :targets, :ancestors, :spec_changes
+
+      def self.compare(old, new, counter: CommitCounter.new(autoproj_root: new.workspace || old.workspace))
+        commits = lambda do |package|
+          before = old.packages[package]
+          after = new.packages[package]
+          next nil unless before&.commit && after&.commit && before.commit != after.commit
+
+          CommitRange.new(from: before.commit, to: after.commit,
+                          count: before.url == after.url ? counter.count(after.url, before.commit, after.commit) : nil).freeze
+        end
+        targets = (old.targets.keys | new.targets.keys).sort.map do |target|
+          TargetDiff.compare(target, old.targets[target], new.targets[target], commits: commits)
+        end
+        new(old, new, targets, ancestor_changes(old, new, targets), SpecChanges.compare(old.spec, new.spec, targets))
+      end
+
+      def self.ancestor_changes(old, new, targets)
+        (old.ancestors.keys | new.ancestors.keys).sort.flat_map do |ancestor|
+          before = old.ancestors.fetch(ancestor, {})
+          after = new.ancestors.fetch(ancestor, {})
+          (before.keys | after.keys).sort.filter_map do |codename|
+            next if before[codename] == after[codename]
+
+            change = if !before.key?(codename) then "added" elsif !after.key?(codename) then "removed" else "changed" end
+            AncestorChange.new(ancestor: ancestor, codename: codename, change: change,
+                               packages: followed(ancestor, codename, targets)).freeze
+          end
+        end
+      end
+
+      # Packages inherited from +ancestor+ on +codename+ (on either side) whose decision changed.
+      def self.followed(ancestor, codename, targets)
+        targets.select { |target| target.target.start_with?("#{codename}/") }.flat_map do |target|
+          target.changes.select { |change| [change.old, change.new].compact.any? { |d| d.inherited? && d.from == ancestor } }
+                .map(&:package)
+        end.uniq.sort
+      end
+
+      def initialize(old, new, targets, ancestors, spec_changes)
+        @old = old
+        @new = new
+        @targets = targets.freeze
+        @ancestors = ancestors.freeze
+        @spec_changes = spec_changes.freeze
+        freeze
+      end
+
+      def release
+        new.release.empty? ? old.release : new.release
+      end
+
+      # "added", "removed", "renamed", "changed" or "unchanged".
+      def status
+        return "added" if old.targets.empty? && !new.targets.empty?
+        return "removed" if new.targets.empty? && !old.targets.empty?
+        return "renamed" if old.release != new.release && !old.release.empty?
+
+        changed? ? "changed" : "unchanged"
+      end
+
+      def changed?
+        targets.any?(&:changed?) || !ancestors.empty? || !spec_changes.empty? || old.release != new.release
+      end
+
+      def rebuilds
+        targets.sum(&:rebuilds)
+      end
+
+      # Changes grouped by the cause that explains them (the end of the
+      # chain, with the package it is about): [[cause text, [[target, package]]]],
+      # largest group first. Only new builds (rebuilds) are grouped.
+      def cause_groups
+        groups = Hash.new { |hash, key| hash[key] = [] }
+        targets.each do |target|
+          target.changes.each do |change|
+            next unless change.rebuild? && !change.new.causes.empty?
+
+            groups[plain_cause(change.new, change.package)] << [target.target, change.package]
+          end
+        end
+        groups.sort_by { |text, members| [-members.map(&:last).uniq.size, text] }
+      end
+
+      # "base/types is blacklisted by "base/types" (…)".
+      def plain_cause(decision, package)
+        root = decision.root_cause
+        # Facts about targets and ancestors group all the packages they hit.
+        return root if root.start_with?("no ancestor has target", "missing in all ancestors")
+
+        "#{decision.root_package(package)} is #{root}"
+      end
+
+      def to_h
+        { "release" => release, "status" => status,
+          "old" => { "release" => old.release, "source" => old.source }, "new" => { "release" => new.release, "source" => new.source },
+          "rebuilds" => rebuilds, "spec_changes" => spec_changes.map(&:to_h), "ancestors" => ancestors.map(&:to_h),
+          "targets" => targets.select(&:changed?).map(&:to_h) }
+      end
+    end
+  end
+end

@@ -1,0 +1,63 @@
+# frozen_string_literal: true
+
+module Relspec
+  module Diff
+    # One package's decision on one target, as the diff sees it: the kind
+    # ("inherit", "build", "published", "system", "unavailable"), the Debian
+    # name and version, the ancestor it comes from and the cause chain.
+    Decision = Struct.new(:kind, :deb, :version, :from, :causes, keyword_init: true) do
+      def built?
+        %w[build published].include?(kind)
+      end
+
+      def inherited?
+        kind == "inherit"
+      end
+
+      # The package whose own cause (blacklist, pin, …) started the chain:
+      # the last "depends on X" step, or +package+ itself.
+      def root_package(package)
+        step = causes.reverse.find { |line| line.start_with?("depends on ") }
+        step ? step.delete_prefix("depends on ").split(",", 2).first : package
+      end
+
+      # The original cause at the end of the chain.
+      def root_cause
+        causes.last
+      end
+
+      def to_h
+        { "decision" => kind, "deb" => deb, "version" => version, "from" => from,
+          "causes" => causes.empty? ? nil : causes }.compact
+      end
+    end
+
+    # Where a package's source comes from (url, commit, …), for commit ranges.
+    PackageSource = Struct.new(:url, :commit, :commit_time, :version, keyword_init: true)
+
+    # Everything a diff compares of one release: its name, where it was read
+    # (+source+, as the user named it), the spec digest, per ancestor and
+    # codename the digest of what it provides, the package sources, per
+    # target ("codename/arch") package => Decision, and the spec file's own
+    # data (+spec+, nil when not known) for spec-level changes; +workspace+:
+    # the autoproj workspace of a spec read from disk (where the sources'
+    # git repositories are, to count commits), nil otherwise.
+    Snapshot = Struct.new(:release, :source, :spec_digest, :ancestors, :packages, :targets, :spec, :workspace,
+                          keyword_init: true) do
+      def self.empty(release, source)
+        new(release: release, source: source, spec_digest: nil, ancestors: {}, packages: {}, targets: {}, spec: nil).freeze
+      end
+
+      # +spec_dir+: the folder of a spec file on disk (its workspace: is
+      # relative to it); nil for a spec read from git.
+      def with_spec(spec, spec_dir: nil)
+        workspace = spec_dir && spec["workspace"].is_a?(String) ? File.expand_path(spec["workspace"], spec_dir) : nil
+        Snapshot.new(**to_h, spec: spec, workspace: workspace && File.directory?(workspace) ? workspace : nil).freeze
+      end
+
+      def with_source(source)
+        Snapshot.new(**to_h, source: source).freeze
+      end
+    end
+  end
+end

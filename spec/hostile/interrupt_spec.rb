@@ -1,0 +1,76 @@
+# frozen_string_literal: true
+
+require "spec_helper"
+require "digest"
+
+# Interrupts at any moment (issue 12, case 4): SIGINT is always "interrupted"
+# and exit 130 (never a NameError from a half-loaded class), and the
+# temporaries of a killed compile are removed by the next one, which ends
+# with the tree a clean compile writes. Temporaries of a process that still
+# runs are left alone.
+RSpec.describe "relspec under interrupts" do
+  around do |example|
+    Dir.mktmpdir("relspec-hostile-interrupt") do |dir|
+      @dir = dir
+      @spec = ReleaseFixture.new(dir).standalone("h", select: ["base/types", "tools/orocos.rb"], targets: "bionic: [amd64]")
+      example.run
+    end
+  end
+
+  def spawn_compile(out)
+    reader, writer = IO.pipe
+    pid = Process.spawn({ "XDG_CACHE_HOME" => CliRunner::CACHE }, RbConfig.ruby, CliRunner::EXE, "compile", @spec,
+                        "--out", out, "--no-check", "--jobs", "2", chdir: @dir, out: File::NULL, err: writer)
+    writer.close
+    [pid, reader]
+  end
+
+  def tree(out)
+    Dir.glob("**/*", File::FNM_DOTMATCH, base: File.join(@dir, out)).reject { |p| p.end_with?(".") }.sort.to_h do |path|
+      file = File.join(@dir, out, path)
+      [path, File.file?(file) ? Digest::SHA256.file(file).hexdigest : :dir]
+    end
+  end
+
+  it "answers SIGINT with 'interrupted' and 130 at every moment of a compile" do
+    (1..12).map { |i| i * 0.15 }.each do |delay|
+      pid, stderr = spawn_compile("out")
+      sleep(delay)
+      Process.kill("INT", pid)
+      _, status = Process.wait2(pid)
+      message = stderr.read
+      next if status.success? # finished before the signal: nothing to judge
+      # Before the first line of relspec runs, Ruby's and Bundler's own boot
+      # handle SIGINT their way (killed by the signal, or Bundler's message):
+      # that window ends before exe/relspec starts, and is not judged here.
+      next unless message.match?(%r{(exe|lib)/relspec|relspec: })
+
+      expect([status.exitstatus, message]).to eq([130, "relspec: interrupted\n"]), "after #{delay} s: #{message}"
+    end
+  end
+
+  it "removes the temporaries of a killed compile, only those, and ends with a clean compile's tree" do
+    expect(relspec("compile", @spec, "--out", "clean", "--no-check", chdir: @dir).exit_code).to eq(0)
+    target = File.join(@dir, "out", "h", "bionic-amd64")
+    FileUtils.mkdir_p(target)
+    # a temporary of a process that still runs (this one): not ours to remove
+    alive = File.join(target, ".rock-h-base-types.relspec-#{Process.pid}-0badcafe")
+    Dir.mkdir(alive)
+    pid, = spawn_compile("out")
+    deadline = Process.clock_gettime(Process::CLOCK_MONOTONIC) + 60
+    until Dir.glob(File.join(target, ".*.relspec-#{pid}-*")).any?
+      raise "no temporary appeared" if Process.clock_gettime(Process::CLOCK_MONOTONIC) > deadline
+
+      sleep(0.01)
+    end
+    Process.kill("KILL", pid)
+    Process.wait(pid)
+    expect(Dir.glob(File.join(target, ".*.relspec-#{pid}-*"))).not_to be_empty
+
+    run = relspec("compile", @spec, "--out", "out", "--no-check", chdir: @dir)
+    expect(run.exit_code).to eq(0), run.stderr
+    expect(Dir.exist?(alive)).to be(true)
+    Dir.rmdir(alive)
+    expect(tree("out")).to eq(tree("clean"))
+  end
+end

@@ -1,0 +1,63 @@
+# frozen_string_literal: true
+
+require "spec_helper"
+require "digest"
+
+# Damaged outputs and caches (issue 12, case 9), through the real CLI: a
+# truncated .orig.tar.gz in the output is noticed by the stamp and written
+# again; a damaged tarball in the orig cache is made again instead of
+# failing in tar with a hint about overlays. Both end with the files a clean
+# compile writes.
+RSpec.describe "relspec compile over damaged outputs" do
+  # One fixture for all (building it is most of the time); each example
+  # starts without output.
+  before(:all) do
+    @dir = Dir.mktmpdir("relspec-hostile-output")
+    @spec = ReleaseFixture.new(@dir).standalone("h", select: ["base/cmake"], targets: "bionic: [amd64, arm64]")
+  end
+
+  after(:all) { FileUtils.rm_rf(@dir) }
+
+  after { FileUtils.rm_rf([File.join(@dir, "out"), File.join(@dir, "releases")]) }
+
+  def compile
+    run = relspec("compile", @spec, "--out", "out", "--no-check", chdir: @dir)
+    expect(run.exit_code).to eq(0), run.stderr
+    run
+  end
+
+  def files
+    Dir.glob(File.join(@dir, "out", "h", "*", "*", "*")).sort.to_h { |path| [path, Digest::SHA256.file(path).hexdigest] }
+  end
+
+  it "notices a truncated .orig.tar.gz in the output and writes the package again" do
+    compile
+    clean = files
+    orig = Dir.glob(File.join(@dir, "out", "h", "bionic-amd64", "*", "*.orig.tar.gz")).first
+    File.truncate(orig, File.size(orig) / 2)
+    run = compile
+    expect(run.stdout).to include("wrote out/h/bionic-amd64/rock-h-base-cmake")
+    expect(run.stdout).not_to include("bionic-arm64")
+    expect(files).to eq(clean)
+  end
+
+  it "notices an output file changed in place (same size) and writes the package again" do
+    compile
+    clean = files
+    dsc = Dir.glob(File.join(@dir, "out", "h", "bionic-arm64", "*", "*.dsc")).first
+    File.write(dsc, File.read(dsc).tr("a", "b"))
+    run = compile
+    expect(run.stdout).to include("wrote out/h/bionic-arm64/rock-h-base-cmake")
+    expect(files).to eq(clean)
+  end
+
+  it "makes a damaged orig cache entry again instead of failing in tar" do
+    compile
+    clean = files
+    cached = Dir.glob(File.join(@dir, "out", "h", ".orig", "*", "*.orig.tar.gz")).first
+    File.binwrite(cached, File.binread(cached)[0, 40])
+    FileUtils.rm_rf(Dir.glob(File.join(@dir, "out", "h", "bionic-*")))
+    compile
+    expect(files).to eq(clean)
+  end
+end
