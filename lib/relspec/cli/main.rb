@@ -132,6 +132,31 @@ module Relspec
                                   out_io: $stdout, err_io: $stderr).call
       end
 
+      desc "build SPEC", "Build the source packages compile wrote, in dependency order (sbuild or this host)"
+      long_desc <<~TEXT
+        Reads <out>/<release>/<codename>-<arch>/plan.yml of each target and builds its
+        source packages, a package as soon as its build-dependencies are built, up to
+        --jobs at once. Results (status, version, duration, log, files with SHA256) go
+        to build-results.yml in the target folder after every package; a killed run is
+        resumed by the next one. See docs/build.md.
+      TEXT
+      option :out, type: :string, default: "build", desc: "Where compile wrote the source packages"
+      option :backend, enum: %w[sbuild host], default: "sbuild", desc: "sbuild (clean chroot) or host (this machine)"
+      option :jobs, type: :numeric, default: 1, desc: "Packages built at once"
+      option :target, type: :string, repeatable: true, desc: "Only this target (codename/arch); repeatable"
+      option :keep_going, type: :boolean, default: false, desc: "Build what does not depend on a failed package"
+      option :rebuild, type: :boolean, default: false, desc: "Rebuild packages an earlier run built"
+      option :prepare, type: :boolean, default: false, desc: "Only make the chroot tarballs (sbuild)"
+      option :format, enum: %w[text json], default: "text", desc: "Output format"
+      def build(path)
+        require_relative "build_command"
+        require_relative "build_progress"
+        finish BuildCommand.new(path: path, out: options[:out], backend: options[:backend], jobs: options[:jobs],
+                                targets: options[:target], keep_going: options[:keep_going],
+                                rebuild: options[:rebuild], prepare: options[:prepare], format: options[:format],
+                                out_io: $stdout, progress_io: options[:quiet] ? nil : $stderr).call
+      end
+
       desc "check SPEC", "Check that the OS dependencies of the release exist on every target"
       long_desc <<~TEXT
         Every Build-Depends and Depends relation relspec writes for the packages the

@@ -1,0 +1,66 @@
+# frozen_string_literal: true
+
+require "json"
+require_relative "../build"
+
+module Relspec
+  module CLI
+    # `relspec build SPEC`: builds what compile wrote, then prints a summary
+    # table (or the results as JSON). Exits 1 when a package failed or was
+    # skipped.
+    class BuildCommand
+      def initialize(path:, out:, backend:, jobs:, targets:, keep_going:, rebuild:, prepare:, format:, out_io:,
+                     progress_io: nil)
+        @path = path
+        @options = { out: out, backend: backend, jobs: jobs, targets: targets, keep_going: keep_going,
+                     rebuild: rebuild, prepare_only: prepare }
+        @format = format
+        @io = out_io
+        @progress_io = progress_io
+      end
+
+      def call
+        listener = @progress_io&.tty? && @format == "text" ? BuildProgress.new(@progress_io) : nil
+        reports = Build.run(@path, **@options, listener: listener)
+        @format == "json" ? @io.puts(JSON.pretty_generate(reports.map { |report| as_json(report) })) : print_text(reports)
+        reports.any?(&:failed?) ? 1 : 0
+      end
+
+      private
+
+      def print_text(reports)
+        reports.each do |report|
+          if @options[:prepare_only]
+            @io.puts("#{report.target}: chroot #{report.prepared ? 'made' : 'ready'}")
+            next
+          end
+          print_table(report)
+        end
+      end
+
+      def print_table(report)
+        rows = report.results.records.sort.map do |source, record|
+          [source, record.version.to_s, record.status, record.duration ? format("%.1f s", record.duration) : "",
+           record.reason.to_s.lines.first.to_s.strip]
+        end
+        @io.puts("#{report.target}: #{count(report, :built)} built, #{report.reused} already built, " \
+                 "#{count(report, :failed)} failed, #{count(report, :skipped)} skipped (#{report.dir})")
+        return if rows.empty?
+
+        widths = (0..3).map { |column| rows.map { |row| row[column].size }.max }
+        rows.each do |row|
+          @io.puts("  #{row.first(4).each_with_index.map { |cell, i| cell.ljust(widths[i]) }.join('  ')}  #{row[4]}".rstrip)
+        end
+      end
+
+      def count(report, status)
+        report.outcomes.count { |outcome| outcome.status == status }
+      end
+
+      def as_json(report)
+        { "target" => report.target.to_s, "folder" => report.dir,
+          "packages" => (report.results&.records || {}).sort.to_h { |source, record| [source, record.to_h] } }
+      end
+    end
+  end
+end

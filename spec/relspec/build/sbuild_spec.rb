@@ -1,0 +1,62 @@
+# frozen_string_literal: true
+
+require "spec_helper"
+require "yaml"
+require_relative "../../support/build_release"
+
+# The sbuild backend for real: a chroot tarball of bookworm made by
+# mmdebstrap (unshare mode) from this machine's apt sources, then sbuild
+# (unshare mode) builds a package and one that build-depends on it (the
+# first one's .deb handed over with --extra-package).
+RSpec.describe "relspec build --backend sbuild", order: :defined do
+  before(:all) do
+    @dir = Dir.mktmpdir("relspec-build-sbuild")
+    @cache = Dir.mktmpdir("relspec-build-sbuild-cache")
+    @release = BuildRelease.new(@dir, "sb")
+    @release.package("base/one")
+    @release.package("base/two", dependencies: ["base/one"])
+    @release.compile
+  end
+
+  after(:all) { FileUtils.rm_rf([@dir, @cache]) }
+
+  def build(*args)
+    relspec("build", "specs/sb.yml", "--out", "out", "--backend", "sbuild", *args, chdir: @dir,
+                                                                                   env: { "XDG_CACHE_HOME" => @cache })
+  end
+
+  it "makes the chroot once and builds in it" do
+    run = build("--jobs", "2")
+    expect(run.exit_code).to eq(0), run.stdout + run.stderr
+    chroot = File.join(@cache, "relspec", "chroots", "bookworm-amd64.tar.zst")
+    expect(File.size(chroot)).to be > 10_000_000
+    results = YAML.safe_load(File.read(File.join(@release.target_dir, "build-results.yml")))
+    expect(results.fetch("backend")).to eq("sbuild")
+    expect(results.fetch("packages").values.map { |record| record["status"] }).to eq(%w[built built])
+    two = File.read(File.join(@release.target_dir, "logs", "#{@release.source('base/two')}.log"))
+    expect(two).to include("--chroot-mode=unshare", "--extra-package=", "#{@release.source('base/one')}_")
+    # sbuild installed the build-dependency built a moment ago in the chroot.
+    expect(two).to match(/Unpacking #{Regexp.escape(@release.source('base/one'))} /)
+
+    mtime = File.mtime(chroot)
+    again = build("--prepare")
+    expect(again.exit_code).to eq(0), again.stderr
+    expect(again.stdout).to eq("bookworm/amd64: chroot ready\n")
+    expect(File.mtime(chroot)).to eq(mtime)
+
+    # Another backend's builds are not reused: host builds both again.
+    host = relspec("build", "specs/sb.yml", "--out", "out", "--backend", "host", chdir: @dir)
+    expect(host.stdout).to include("bookworm/amd64: 2 built, 0 already built")
+  end
+
+  it "says which setting provides a mirror when a chroot cannot be made" do
+    File.write(@release.spec_path, File.read(@release.spec_path).sub("bookworm: [amd64]", "bookworm: [amd64], bullseye: [amd64]"))
+    compile = relspec("compile", "specs/sb.yml", "--out", "out", "--no-check", chdir: @dir)
+    expect(compile.exit_code).to eq(0), compile.stderr
+    run = build("--target", "bullseye/amd64", "--prepare")
+    expect(run.exit_code).to eq(1)
+    expect(run.stderr).to eq("relspec: error: cannot make the chroot for bullseye/amd64: no mirror of bullseye " \
+                             "(set distributions.bullseye.archive.url in the spec; this machine's apt sources are " \
+                             "used only when the codename is the host's own, here bookworm)\n")
+  end
+end
