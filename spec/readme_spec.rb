@@ -35,6 +35,7 @@ RSpec.describe "the README's example command" do
     expect(output).to include("2 specs valid: specs/demo-base.yml specs/demo-child.yml")
     expect(output).to match(%r{^bionic/amd64\s+4\s+3\s+0\s+0$})
     expect(output).to match(%r{^buster/amd64\s+3\s+3\s+0\s+1$})
+    expect(output).to match(%r{^bookworm/amd64\s+4\s+3\s+0\s+0$})
     expect(output).to include("not available on buster/amd64:\n  tools/legacy  osdep motif is nonexistent on buster")
     expect(output).to include('blacklisted by "base/types" (the project needs the 2020 types API)')
     expect(output).to include("depends on base/types, which is rebuilt because blacklisted by")

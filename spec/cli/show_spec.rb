@@ -11,7 +11,7 @@ RSpec.describe "relspec show" do
     spec = YAML.safe_load(run.stdout)
     expect(spec).to include(
       "release" => "demo-child", "parent" => "demo-base", "ancestors" => ["demo-base"],
-      "targets" => { "bionic" => ["amd64"], "buster" => ["amd64"] },
+      "targets" => { "bionic" => ["amd64"], "buster" => ["amd64"], "bookworm" => ["amd64"] },
       "maintainer" => "Rock Packaging <rock-dev@example.org>",
       "blacklist" => [{ "match" => "base/types", "reason" => "the project needs the 2020 types API" }],
       "pins" => { "base/types" => { "tag" => "v2.0.0" } },
@@ -34,7 +34,7 @@ RSpec.describe "relspec show" do
     run = relspec("show", "specs/demo-child.yml", "--origins", "--format", "json")
     document = JSON.parse(run.stdout)
     expect(document["spec"]["package_prefix"]).to eq("rock")
-    expect(document["origins"]).to include("package_prefix" => "specs/demo-base.yml:14:1",
+    expect(document["origins"]).to include("package_prefix" => "specs/demo-base.yml:15:1",
                                            "pins.base/types" => "specs/demo-child.yml:11:3")
   end
 

@@ -79,6 +79,22 @@ module DemoWorkspace
     message(STATUS "found base/cmake in ${BASE_CMAKE_DIR}")
   CMAKE
 
+  # An autotools package that really builds: configure writes the Makefile
+  # that dh_auto_build and dh_auto_install run.
+  CONFIGURE_AC = <<~AC
+    AC_INIT([%<project>s], [%<version>s])
+    AC_CONFIG_FILES([Makefile])
+    AC_OUTPUT
+  AC
+
+  MAKEFILE_IN = <<~MAKE
+    prefix = @prefix@
+    all:
+    install:
+    	mkdir -p $(DESTDIR)$(prefix)/share/%<project>s
+    	cp README $(DESTDIR)$(prefix)/share/%<project>s/
+  MAKE
+
   def files_for(name, type, version)
     project = name.tr("/", "-")
     readme = { "README" => "#{name}: part of the relspec demo workspace.\n" }
@@ -86,7 +102,8 @@ module DemoWorkspace
     cmake += NEEDS_BASE_CMAKE if name == "base/logging"
     case type
     when :cmake then readme.merge("CMakeLists.txt" => cmake)
-    when :autotools then readme.merge("configure.ac" => "AC_INIT([#{project}], [#{version}])\nAC_OUTPUT\n")
+    when :autotools then readme.merge("configure.ac" => format(CONFIGURE_AC, project: project, version: version),
+                                      "Makefile.in" => format(MAKEFILE_IN, project: project))
     when :ruby then readme.merge("lib/#{File.basename(name, '.rb')}.rb" => "module Orocos\nend\n")
     else readme
     end

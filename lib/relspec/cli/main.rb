@@ -111,6 +111,27 @@ module Relspec
                                   check: options[:check] && { launchpad_base: options[:launchpad_url] }).call
       end
 
+      desc "publish SPEC", "Put what relspec build built into the release's reprepro repository"
+      long_desc <<~TEXT
+        Reads <out>/<release>/<codename>-<arch>/build-results.yml of each target and
+        includes every built package (its .dsc and .debs) into the repository at the
+        spec's repository.path, whose conf/distributions and conf/options it writes
+        from the spec's targets (signed with repository.sign_with when set). Failed
+        and skipped packages are never published; a file whose name the repository
+        already holds with other bytes stops the publication before anything is
+        included. Then writes <repository>/osdeps/<release>-<arch>.yml from what the
+        repository really holds. Publishing the same results again changes nothing.
+        See docs/publish.md.
+      TEXT
+      option :out, type: :string, default: "build", desc: "Where relspec compile and build wrote"
+      option :target, type: :string, desc: "Only this target (codename/arch)"
+      option :timeout, type: :numeric, default: 10, desc: "HTTP timeout in seconds"
+      def publish(path)
+        require_relative "publish_command"
+        finish PublishCommand.new(path: path, out: options[:out], target: options[:target], timeout: options[:timeout],
+                                  out_io: $stdout, err_io: $stderr).call
+      end
+
       desc "build SPEC", "Build the source packages compile wrote, in dependency order (sbuild or this host)"
       long_desc <<~TEXT
         Reads <out>/<release>/<codename>-<arch>/plan.yml of each target and builds its

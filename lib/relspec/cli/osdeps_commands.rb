@@ -92,16 +92,12 @@ module Relspec
 
       # With --from-repository, a filter keeping what the repositories hold,
       # and the planned packages that are missing.
-      def presence(result)
+      def presence(_result)
         return [->(_target, _decision) { true }, []] unless options[:from_repository]
 
-        missing = []
-        present = lambda do |target, decision|
-          held = !decision.build?
-          missing << "#{target} #{decision.package} (#{decision.deb_name} #{decision.version})" unless held
-          held
-        end
-        [present, missing]
+        require_relative "../osdeps/repository_presence"
+        presence = Osdeps::RepositoryPresence.new
+        [presence.to_proc, presence.missing]
       end
     end
   end

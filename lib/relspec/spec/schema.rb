@@ -56,6 +56,13 @@ module Relspec
         optional(:trusted).value(:bool)
       end
 
+      # The release's own repository: also how `relspec publish` signs it
+      # (a gpg key id or fingerprint for reprepro's SignWith).
+      OWN_REPOSITORY = Dry::Schema.JSON(parent: REPOSITORY) do
+        config.validate_keys = true
+        optional(:sign_with).filled(:string)
+      end
+
       # An external release is a repository plus what it tells its descendants.
       EXTERNAL = Dry::Schema.JSON(parent: REPOSITORY) do
         config.validate_keys = true

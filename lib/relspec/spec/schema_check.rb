@@ -82,7 +82,7 @@ module Relspec
 
       def check_entries(data)
         check_blacklist(data["blacklist"])
-        apply(Schema::REPOSITORY, data["repository"], ["repository"]) if data["repository"].is_a?(Hash)
+        apply(Schema::OWN_REPOSITORY, data["repository"], ["repository"]) if data["repository"].is_a?(Hash)
         ENTRY_MAPPINGS.each do |key, schema|
           next unless data[key].is_a?(Hash)
 

@@ -1,0 +1,55 @@
+# frozen_string_literal: true
+
+require_relative "../publish"
+
+module Relspec
+  module CLI
+    # `relspec publish SPEC`: the built packages into the release's
+    # repository, then its osdeps files.
+    class PublishCommand
+      def initialize(path:, out:, target:, timeout:, out_io:, err_io:)
+        @path = path
+        @out = out
+        @target = target
+        @timeout = timeout
+        @io = out_io
+        @err = err_io
+      end
+
+      def call
+        result = Publish.run(@path, out: @out, target: @target, timeout: @timeout,
+                                    waiting: -> { @err.puts("waiting for another relspec publish to finish…") })
+        result.targets.each { |target| report(target) }
+        @io.puts("#{result.release}: #{result.repository}: #{result.osdeps_written.zero? ? 'osdeps unchanged' : "wrote #{result.osdeps_written} osdeps files"}")
+        note_missing(result.osdeps_missing)
+        0
+      end
+
+      private
+
+      # Planned packages the osdeps files leave out, counted per target (the
+      # list is `relspec osdeps --from-repository`'s).
+      def note_missing(missing)
+        return if missing.empty?
+
+        counts = missing.map { |line| line.split(" ", 2).first }.tally.map { |target, count| "#{target}: #{count}" }
+        @err.puts("not in the repository yet, so not in its osdeps files: #{missing.size} planned packages " \
+                  "(#{counts.join(', ')}); relspec osdeps SPEC --from-repository lists them")
+      end
+
+      def report(target)
+        unless target.built
+          @io.puts("#{target.target}: not built (no build-results.yml)")
+          return
+        end
+        @io.puts("#{target.target}: #{target.published.size} published, #{target.held.size} already in the repository")
+        target.published.each { |source| @io.puts("  published #{source}") }
+        target.left_out.each do |entry|
+          next if entry.status == "published"
+
+          @io.puts("  not published: #{entry.source} (#{entry.status})")
+        end
+      end
+    end
+  end
+end

@@ -1,0 +1,119 @@
+# frozen_string_literal: true
+
+require "fileutils"
+require_relative "spec"
+require_relative "plan"
+require_relative "atomic_file"
+require_relative "diagnostic"
+require_relative "osdeps/renderer"
+require_relative "osdeps/repository_presence"
+require_relative "publish/build_results"
+require_relative "publish/repository_config"
+require_relative "publish/repository_lock"
+require_relative "publish/upload"
+require_relative "publish/pool_guard"
+require_relative "publish/reprepro"
+require_relative "publish/signing_key"
+
+module Relspec
+  # `relspec publish`: the built packages of a release into its reprepro
+  # repository (spec `repository.path`), then the osdeps files of what the
+  # repository really holds. Declarative and idempotent: the configuration
+  # follows the spec, publishing the same results again changes nothing, and
+  # a run interrupted anywhere is finished by the next one.
+  module Publish
+    # Per target: +published+ the sources included now, +held+ those the
+    # repository had already, +left_out+ the failed/skipped entries, +built+
+    # false when the target has no build-results.yml.
+    TargetResult = Struct.new(:target, :results_path, :published, :held, :left_out, :built, keyword_init: true)
+    Result = Struct.new(:release, :repository, :targets, :osdeps_written, :osdeps_missing, keyword_init: true)
+
+    # +target+: "codename/arch" or nil (all targets); +waiting+: called
+    # when another publisher holds the repository.
+    def self.run(path, out:, target: nil, timeout: 10, waiting: nil)
+      resolution = Spec.resolve(path)
+      effective = resolution.effective
+      repository = repository_path(resolution)
+      all = Plan::Target.all(effective)
+      selected = Plan::Target.select(target, all, effective.release)
+      results = selected.to_h { |one| [one, read_results(out, effective.release, one, explicit: !target.nil?)] }
+      raise PublishError, "nothing to publish: no target of #{effective.release} has a build-results.yml under " \
+                          "#{File.join(out, effective.release)} (run relspec build first)" if results.values.none?
+
+      uploads = results.to_h { |one, read| [one, read ? read.built.map { |entry| Upload.of(entry, File.dirname(read.path), read.path) } : []] }
+      sign_with = effective["repository"]["sign_with"]
+      SigningKey.check(sign_with) if sign_with
+      config = RepositoryConfig.new(release: effective.release, targets: all, sign_with: sign_with)
+      RepositoryLock.hold(repository, waiting: waiting) do
+        targets = include_targets(repository, config, results, uploads)
+        written, missing = write_osdeps(path, repository, timeout)
+        Result.new(release: effective.release, repository: repository, targets: targets, osdeps_written: written,
+                   osdeps_missing: missing)
+      end
+    end
+
+    def self.repository_path(resolution)
+      entry = resolution.effective["repository"]
+      return File.expand_path(entry["path"], File.dirname(resolution.spec_file.path)) if entry.is_a?(Hash) && entry["path"]
+
+      location = entry ? resolution.spec_file.key_location(["repository"]) : resolution.spec_file.location(["release"])
+      raise InvalidInput, [Diagnostic.error("publish-repository",
+                                            "release #{resolution.effective.release} has no repository.path to publish into",
+                                            location: location, hint: "add `repository: { path: <reprepro base directory> }`")]
+    end
+
+    # The target's results, nil when it has none (an error when the user
+    # asked for that target).
+    def self.read_results(out, release, target, explicit:)
+      path = BuildResults.path(out, release, target)
+      return BuildResults.read(path, release: release, target: target) if File.exist?(path)
+      raise PublishError, "#{target} of #{release} has not been built: #{path} does not exist (run relspec build)" if explicit
+
+      nil
+    end
+
+    def self.include_targets(repository, config, results, uploads)
+      reprepro = Reprepro.new(repository)
+      changed = write_config(repository, config)
+      PoolGuard.check(repository, uploads.values.flatten.flat_map(&:items))
+      targets = results.map do |target, read|
+        listed = File.directory?(File.join(repository, "db")) ? reprepro.sources(target.codename) : []
+        held, fresh = uploads[target].partition { |upload| listed.include?("#{upload.source} #{upload.version}") }
+        fresh.each { |upload| reprepro.includedsc(target.codename, upload.dsc) }
+        # Every .deb of the target in one call, held ones too: reprepro skips
+        # what it has, and a run interrupted after a source was included but
+        # before its .debs were gets them now.
+        debs = uploads[target].flat_map(&:debs)
+        reprepro.includedeb(target.codename, debs) unless debs.empty?
+        TargetResult.new(target: target, results_path: read&.path, published: fresh.map(&:source), held: held.map(&:source),
+                         left_out: read ? read.entries.reject(&:built?) : [], built: !read.nil?)
+      end
+      # A new or changed configuration reaches dists/ (distributions without
+      # packages, a new signing key) only by an export.
+      reprepro.export if changed
+      targets
+    end
+
+    def self.write_config(repository, config)
+      dir = File.join(repository, "conf")
+      FileUtils.mkdir_p(dir)
+      config.files.map { |name, text| AtomicFile.update(File.join(dir, name), text) }.any?
+    end
+
+    # <repository>/osdeps/<release>-<arch>.yml from a new plan, which reads
+    # the repository as it is now: only what it really holds (or the
+    # ancestors do) is listed.
+    def self.write_osdeps(path, repository, timeout)
+      planned = Plan.compute(path, timeout: timeout)
+      presence = Osdeps::RepositoryPresence.new
+      files = Osdeps::Renderer.render(planned.plan, planned.resolution.effective.distributions, present: presence.to_proc)
+      dir = File.join(repository, "osdeps")
+      FileUtils.mkdir_p(dir)
+      written = files.count do |arch, text|
+        AtomicFile.update(File.join(dir, Osdeps::Renderer.file_name(planned.resolution.effective.release, arch)), text)
+      end
+      [written, presence.missing]
+    end
+    private_class_method :repository_path, :read_results, :include_targets, :write_config, :write_osdeps
+  end
+end

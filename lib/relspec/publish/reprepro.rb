@@ -1,0 +1,45 @@
+# frozen_string_literal: true
+
+require "open3"
+require_relative "../error"
+
+module Relspec
+  module Publish
+    # reprepro on one base directory. A failure is one PublishError naming
+    # the command, its exit status and its output.
+    class Reprepro
+      OUTPUT_LINES = 30 # lines of a failed command's output kept in the message
+
+      def initialize(base)
+        @base = base
+      end
+
+      def includedsc(codename, dsc)
+        run("includedsc", codename, dsc)
+      end
+
+      def includedeb(codename, debs)
+        run("includedeb", codename, *debs)
+      end
+
+      # The source packages +codename+ holds, as "source version" lines.
+      def sources(codename)
+        run("--architecture", "source", "--list-format", "${package} ${version}\n", "list", codename).lines.map(&:chomp)
+      end
+
+      def export
+        run("export")
+      end
+
+      def run(*args)
+        output, status = Open3.capture2e("reprepro", "--basedir", @base, *args)
+        return output if status.success?
+
+        raise PublishError, "reprepro #{args.first} failed (exit status #{status.exitstatus}) in #{@base}:\n" \
+                            "#{output.lines.last(OUTPUT_LINES).join.rstrip}"
+      rescue SystemCallError => e
+        raise PublishError, "cannot run reprepro: #{e.message.sub(/ @ .*/, '')} (install the reprepro package)"
+      end
+    end
+  end
+end

@@ -1,0 +1,76 @@
+# frozen_string_literal: true
+
+require "spec_helper"
+require "relspec/publish/build_results"
+require "relspec/plan/target"
+
+RSpec.describe Relspec::Publish::BuildResults do
+  let(:target) { Relspec::Plan::Target.new("bookworm", "amd64") }
+  let(:sha) { "a" * 64 }
+  let(:good) do
+    <<~YAML
+      relspec_build_results: 1
+      release: demo-base
+      target: bookworm/amd64
+      backend: sbuild
+      packages:
+        rock-demo-base-base-cmake:
+          package: base/cmake
+          version: 1.0-1~bookworm
+          status: built
+          duration: 12.3
+          log: logs/rock-demo-base-base-cmake.log
+          files:
+            - { name: results/rock-demo-base-base-cmake/rock-demo-base-base-cmake_1.0-1~bookworm_amd64.deb, sha256: #{sha}, size: 10 }
+        rock-demo-base-base-types:
+          package: base/types
+          version: 2.0-1~bookworm
+          status: failed
+          duration: 3.0
+          log: logs/rock-demo-base-base-types.log
+          reason: "dpkg-buildpackage failed (exit status 2)"
+    YAML
+  end
+
+  def parse(text, release: "demo-base")
+    described_class.parse(text, file: "build/demo-base/bookworm-amd64/build-results.yml", release: release, target: target)
+  end
+
+  def error_of(text, **options)
+    parse(text, **options)
+    raise "no error"
+  rescue Relspec::InvalidInput => e
+    e.message
+  end
+
+  it "reads every entry, sorted, with the built ones and their files" do
+    results = parse(good)
+    expect(results.entries.map(&:source)).to eq(%w[rock-demo-base-base-cmake rock-demo-base-base-types])
+    expect(results.built.map(&:source)).to eq(%w[rock-demo-base-base-cmake])
+    file = results.built.first.files.first
+    expect([file.sha256, file.size, results.built.first.version]).to eq([sha, 10, "1.0-1~bookworm"])
+  end
+
+  {
+    "an unknown status" => [["status: failed", "status: broken"], 17, 'status "broken" is not one of built, failed, skipped, published'],
+    "an unknown key" => [["duration: 3.0", "durations: 3.0"], 18, 'unknown key "durations"'],
+    "a path leaving the target folder" => [["name: results/", "name: ../../"], 13, "is not a plain path inside the target folder"],
+    "a bad digest" => [["sha256: #{'a' * 64}", "sha256: abc"], 13, "sha256 must be 64 lowercase hex digits"],
+    "an invalid version" => [["version: 2.0-1~bookworm", "version: 2.0 beta"], 16, 'invalid Debian version "2.0 beta"'],
+    "another format" => [["relspec_build_results: 1", "relspec_build_results: 2"], 1, "unknown format 2"],
+    "another target" => [["target: bookworm/amd64", "target: bionic/amd64"], 3, 'target is "bionic/amd64", expected "bookworm/amd64"'],
+    "a built package without files" => [[/ {4}files:\n.*\n/, ""], 7, "a built package lists the files it produced"]
+  }.each do |what, ((from, to), line, message)|
+    it "refuses #{what} at its line" do
+      text = good.sub(from, to)
+      expect(text).not_to eq(good)
+      expect(error_of(text)).to match(/\Abuild\/demo-base\/bookworm-amd64\/build-results\.yml:#{line}:\d+: error\[build-results\]: .*#{Regexp.escape(message)}/)
+    end
+  end
+
+  it "refuses results of another release and broken YAML" do
+    expect(error_of(good, release: "demo-child")).to include(':2:', 'release is "demo-base", expected "demo-child"')
+    expect(error_of("packages: [\n")).to include("build-results.yml:")
+    expect(error_of("")).to include("the file is empty or not a mapping")
+  end
+end
