@@ -15,7 +15,7 @@ module DemoWorkspace
         default: libboost-all-dev
       debian:
         buster: libboost1.67-all-dev
-        default: libboost-all-dev
+        default: libboost-dev
     eigen:
       ubuntu,debian: libeigen3-dev
     motif:

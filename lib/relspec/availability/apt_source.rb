@@ -76,13 +76,17 @@ module Relspec
         end
       end
 
+      # The cache entry's name says its format: entries written before the
+      # names were kept sorted must not be searched by bisection.
+      NAMES_ENTRY = "names-sorted"
+
       def index_names(suite, arch, component)
         digest = @reader.index_digest(suite, arch, component: component)
-        cached = @names_cache.read(digest, "names")
+        cached = @names_cache.read(digest, NAMES_ENTRY)
         return IndexNames.load(cached.force_encoding(Encoding::UTF_8)) if cached
 
         names = IndexNames.parse(@reader.packages_text(suite, arch, component: component))
-        @names_cache.write(digest, "names", names.dump)
+        @names_cache.write(digest, NAMES_ENTRY, names.dump)
         names
       end
     end

@@ -18,6 +18,9 @@ module Relspec
     # /opt (overlayfs, read-only) in a mount namespace of the build alone
     # (`unshare --mount`, which needs root or user namespaces). Only files
     # under /opt are visible that way, which is where Rock releases install.
+    # The packages of local repositories (the release's own and its
+    # ancestors', e.g. a parent release published on this machine) are made
+    # visible the same way.
     class HostBackend
       NAME = "host"
       # What dpkg-checkbuilddeps prints before the relations it misses.
@@ -59,7 +62,8 @@ module Relspec
         unmet = output[UNMET, 1] or
           raise BuildError, "#{request.source}: dpkg-checkbuilddeps failed (exit status #{status.exitstatus}), " \
                             "see #{request.log}"
-        local = request.local_debs.to_h { |deb| [File.basename(deb).split("_").first, deb] }
+        local = (request.repositories.flat_map { |repository| repository.pool_debs(request.target) } +
+                 request.local_debs).to_h { |deb| [File.basename(deb).split("_").first, deb] }
         missing = unmet.split(/,\s*/).reject { |relation| relation.split(/\s*\|\s*/).any? { |alt| local[alt[/\A[^\s(:]+/]] } }
         unless missing.empty?
           raise BuildError, "#{request.source}: build-dependencies missing on this machine: #{missing.join(', ')} " \

@@ -27,6 +27,15 @@ module Relspec
       def local?
         !uri.match?(%r{\A[a-z]+://})
       end
+
+      # The .debs a local repository holds for +target+ (its pool; which of
+      # them a build takes is left to the version relations).
+      def pool_debs(target)
+        return [] unless local? && File.directory?(File.join(uri, "dists", target.codename))
+
+        Dir.glob(File.join(uri, "pool", "**", "*_{#{target.arch},all}.deb")).sort
+           .select { |deb| deb.include?("~#{target.codename}") }
+      end
     end
   end
 end

@@ -71,14 +71,9 @@ module Relspec
         end
       end
 
-      # The .debs a local repository holds for the target (its pool, filtered
-      # by what dists/<codename> lists is not needed: apt picks by version).
+      # The .debs a local repository holds for the target (apt picks by version).
       def local_packages(repository, target)
-        return [] unless File.directory?(File.join(repository.uri, "dists", target.codename))
-
-        Dir.glob(File.join(repository.uri, "pool", "**", "*_{#{target.arch},all}.deb")).sort
-           .select { |deb| deb.include?("~#{target.codename}") }
-           .map { |deb| "--extra-package=#{deb}" }
+        repository.pool_debs(target).map { |deb| "--extra-package=#{deb}" }
       end
 
       def collect(work, output_dir)

@@ -30,7 +30,7 @@ RSpec.describe "relspec check" do
 
   # The Debian side of the boost osdep renamed to a name bookworm does not have.
   def rename_boost
-    File.write(@osdeps, @original.sub(/(debian:\n\s+buster: libboost1.67-all-dev\n\s+default: )libboost-all-dev/,
+    File.write(@osdeps, @original.sub(/(debian:\n\s+buster: libboost1.67-all-dev\n\s+default: )libboost-dev/,
                                       "\\1libboost-system1.67-dev"))
     expect(File.read(@osdeps)).to include("default: libboost-system1.67-dev")
   end
