@@ -34,7 +34,7 @@ RSpec.describe "relspec show" do
     run = relspec("show", "specs/demo-child.yml", "--origins", "--format", "json")
     document = JSON.parse(run.stdout)
     expect(document["spec"]["package_prefix"]).to eq("rock")
-    expect(document["origins"]).to include("package_prefix" => "specs/demo-base.yml:15:1",
+    expect(document["origins"]).to include("package_prefix" => "specs/demo-base.yml:13:1",
                                            "pins.base/types" => "specs/demo-child.yml:11:3")
   end
 
