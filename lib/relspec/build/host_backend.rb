@@ -4,6 +4,7 @@ require "fileutils"
 require "open3"
 require "tmpdir"
 require_relative "../error"
+require_relative "produced_files"
 
 module Relspec
   module Build
@@ -45,7 +46,7 @@ module Relspec
           command = ["dpkg-buildpackage", "-us", "-uc", "-b", "-d"]
           command = overlay(request, work, local) + command unless local.empty?
           @tool.run(request.source, command, log: request.log, chdir: tree)
-          collect(work, request.output_dir)
+          ProducedFiles.collect(work, request.output_dir)
         end
       end
 
@@ -81,15 +82,6 @@ module Relspec
         debs.each { |deb| @tool.run(request.source, ["dpkg-deb", "-x", deb, root], log: request.log) }
         ["unshare", "--mount", "--propagation", "private", "sh", "-c",
          'mount -t overlay relspec-build -o "lowerdir=$0/opt:/opt" /opt && exec "$@"', root]
-      end
-
-      def collect(work, output_dir)
-        FileUtils.mkdir_p(output_dir)
-        Dir.glob(File.join(work, "*.{deb,udeb,buildinfo,changes}")).sort.map do |file|
-          target = File.join(output_dir, File.basename(file))
-          FileUtils.mv(file, target)
-          target
-        end
       end
     end
   end

@@ -4,6 +4,7 @@ require "fileutils"
 require "tmpdir"
 require_relative "chroot"
 require_relative "../error"
+require_relative "produced_files"
 
 module Relspec
   module Build
@@ -50,7 +51,7 @@ module Relspec
                      *repository_options(request), *request.local_debs.map { |deb| "--extra-package=#{deb}" },
                      request.dsc]
           @tool.run(request.source, command, log: request.log, chdir: work)
-          collect(work, request.output_dir)
+          ProducedFiles.collect(work, request.output_dir)
         end
       end
 
@@ -74,15 +75,6 @@ module Relspec
       # The .debs a local repository holds for the target (apt picks by version).
       def local_packages(repository, target)
         repository.pool_debs(target).map { |deb| "--extra-package=#{deb}" }
-      end
-
-      def collect(work, output_dir)
-        FileUtils.mkdir_p(output_dir)
-        Dir.glob(File.join(work, "*.{deb,udeb,buildinfo,changes}")).sort.map do |file|
-          target = File.join(output_dir, File.basename(file))
-          FileUtils.mv(file, target)
-          target
-        end
       end
     end
   end
