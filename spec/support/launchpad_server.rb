@@ -87,6 +87,11 @@ class LaunchpadServer
     when :slow
       sleep(seconds)
       false
+    when :drip, :endless
+      # not Launchpad's behaviour: a hostile or broken server (a body that
+      # comes one byte at a time, or never ends), for the client's bounds
+      stream(response, code == :drip ? "{" : "x" * 65_536, code == :drip ? 0.05 : 0)
+      true
     when 429
       response.status = 429
       response["Retry-After"] = seconds.to_s
@@ -95,6 +100,21 @@ class LaunchpadServer
       response.status = code
       response.body = "Service unavailable"
       true
+    end
+  end
+
+  def stream(response, piece, pause)
+    response.status = 200
+    response["Content-Type"] = "application/json"
+    response.chunked = true
+    response.body = proc do |out|
+      stop_at = Process.clock_gettime(Process::CLOCK_MONOTONIC) + 30
+      while Process.clock_gettime(Process::CLOCK_MONOTONIC) < stop_at
+        out.write(piece) # (WEBrick 1.9's ChunkedWrapper#<< is broken)
+        sleep(pause) if pause.positive?
+      end
+    rescue IOError, SystemCallError
+      nil # the client hung up, as it should
     end
   end
 

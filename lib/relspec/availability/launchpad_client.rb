@@ -4,6 +4,7 @@ require "json"
 require "time"
 require "net/http"
 require "openssl"
+require "timeout"
 require "uri"
 require_relative "../error"
 
@@ -22,6 +23,13 @@ module Relspec
       BACKOFF = 0.5          # seconds before the 2nd attempt; doubles after
       MAX_RETRY_AFTER = 60   # a server asking for a longer pause is a failure
       MAX_PAGES = 50         # a collection longer than this is not what we asked for
+      # A page of getPublishedBinaries (75 entries) is ~100 KB: an answer
+      # larger than this is not Launchpad's, and reading stops there.
+      MAX_ANSWER_BYTES = 8 * 1024 * 1024
+      # The timeout applies to each read; a server dripping bytes would pass
+      # it forever, so each page (all its attempts and pauses) also has an
+      # overall deadline of this many timeouts.
+      DEADLINE_FACTOR = 12
 
       # The service cannot answer (after the retries); the message says why.
       class Failure < Relspec::Error; end
@@ -82,11 +90,23 @@ module Relspec
         end
       end
 
+      # Raised when a page passed its overall deadline.
+      class DeadlineExceeded < StandardError; end
+
       def get_json(url, where)
         attempt = 0
+        started = now
         begin
           attempt += 1
-          parse(get(URI(url), where), url)
+          remaining = (@timeout * DEADLINE_FACTOR) - (now - started)
+          raise DeadlineExceeded if remaining <= 0
+
+          parse(Timeout.timeout(remaining, DeadlineExceeded) { get(URI(url), where) }, url)
+        rescue DeadlineExceeded
+          raise Failure, format("Launchpad: %<url>s: not complete after %<elapsed>.1f s, the deadline of a page " \
+                                "(%<factor>d × the timeout %<timeout>s s; after %<attempts>d attempts)",
+                                url: url, elapsed: now - started, factor: DEADLINE_FACTOR, timeout: @timeout,
+                                attempts: attempt)
         rescue Net::OpenTimeout, Net::ReadTimeout, SystemCallError, SocketError, IOError, Retryable => e
           raise Failure, "Launchpad: #{url}: #{describe(e)} (after #{attempt} attempts)" if attempt >= @retries
 
@@ -116,13 +136,33 @@ module Relspec
         http.start do
           request = Net::HTTP::Get.new(uri)
           request["Accept"] = "application/json"
-          answer(http.request(request), uri, where)
+          # `return` leaves before Net::HTTP reads the rest of a body that
+          # was not wanted (an error page can be endless too).
+          http.request(request) { |response| return answer(response, uri, where) }
         end
+      end
+
+      def now
+        Process.clock_gettime(Process::CLOCK_MONOTONIC)
+      end
+
+      # The body, read in pieces so that an endless one stops at the cap.
+      def read_body(response, uri)
+        too_large = "Launchpad: #{uri}: the answer is larger than #{MAX_ANSWER_BYTES} bytes (MAX_ANSWER_BYTES); stopped"
+        raise Failure, too_large if response.content_length.to_i > MAX_ANSWER_BYTES
+
+        body = String.new(encoding: Encoding::BINARY)
+        response.read_body do |chunk|
+          raise Failure, too_large if body.bytesize + chunk.bytesize > MAX_ANSWER_BYTES
+
+          body << chunk
+        end
+        body.force_encoding(Encoding::UTF_8)
       end
 
       def answer(response, uri, where)
         case response
-        when Net::HTTPSuccess then response.body
+        when Net::HTTPSuccess then read_body(response, uri)
         when Net::HTTPNotFound, Net::HTTPBadRequest
           raise UnknownSeries, "Launchpad has no Ubuntu series/architecture #{where} (#{uri.host}: HTTP #{response.code})"
         when Net::HTTPTooManyRequests, Net::HTTPServerError

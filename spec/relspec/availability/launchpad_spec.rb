@@ -83,6 +83,20 @@ RSpec.describe Relspec::Availability::LaunchpadClient do
       .to raise_error(described_class::Failure, /asked to wait 3600 s/)
   end
 
+  it "gives a page dripping one byte at a time an overall deadline" do
+    @server.fail("cmake", :drip)
+    started = Process.clock_gettime(Process::CLOCK_MONOTONIC)
+    expect { client(@server, timeout: 0.2, retries: 1).published_binaries("cmake", "jammy", "amd64") }
+      .to raise_error(described_class::Failure, /not complete after 2\.\d s, the deadline of a page \(12 × the timeout 0\.2 s; after 1 attempts\)/)
+    expect(Process.clock_gettime(Process::CLOCK_MONOTONIC) - started).to be < 5
+  end
+
+  it "stops reading an endless answer at its cap" do
+    @server.fail("cmake", :endless)
+    expect { client(@server, timeout: 5, retries: 1).published_binaries("cmake", "jammy", "amd64") }
+      .to raise_error(described_class::Failure, /the answer is larger than 8388608 bytes \(MAX_ANSWER_BYTES\); stopped/)
+  end
+
   it "times out an answer slower than the timeout, retries, and reports when it never comes" do
     @server.fail("cmake", [:slow, 1.5])
     lp = client(@server, timeout: 0.5)
