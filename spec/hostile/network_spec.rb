@@ -45,19 +45,8 @@ RSpec.describe "relspec plan against hostile repositories" do
       File.file?(file) ? response.body = File.binread(file) : response.status = 404
     end
 
-    # Writes +piece+ until the client hangs up (or 60 s, so no test can
-    # leave a thread behind for long).
     def stream(response, piece, pause)
-      response.chunked = true
-      response.body = proc do |out|
-        stop_at = Process.clock_gettime(Process::CLOCK_MONOTONIC) + 60
-        while Process.clock_gettime(Process::CLOCK_MONOTONIC) < stop_at
-          out.write(piece) # (WEBrick 1.9's ChunkedWrapper#<< is broken)
-          sleep(pause) if pause.positive?
-        end
-      rescue IOError, SystemCallError
-        nil # the client hung up: what the test expects
-      end
+      StreamedBody.attach(response, piece, pause)
     end
   end
 

@@ -106,16 +106,7 @@ class LaunchpadServer
   def stream(response, piece, pause)
     response.status = 200
     response["Content-Type"] = "application/json"
-    response.chunked = true
-    response.body = proc do |out|
-      stop_at = Process.clock_gettime(Process::CLOCK_MONOTONIC) + 30
-      while Process.clock_gettime(Process::CLOCK_MONOTONIC) < stop_at
-        out.write(piece) # (WEBrick 1.9's ChunkedWrapper#<< is broken)
-        sleep(pause) if pause.positive?
-      end
-    rescue IOError, SystemCallError
-      nil # the client hung up, as it should
-    end
+    StreamedBody.attach(response, piece, pause, limit: 30)
   end
 
   def collection(request, query, response)

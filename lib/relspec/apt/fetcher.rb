@@ -4,6 +4,7 @@ require "net/http"
 require "openssl"
 require "timeout"
 require "uri"
+require_relative "../http/capped_body"
 
 module Relspec
   module Apt
@@ -146,16 +147,9 @@ module Relspec
 
       # The body, read in pieces so that an endless one stops at +max_bytes+.
       def read_body(uri, response, max_bytes)
-        too_large = "#{uri}: the server sends more than #{max_bytes} bytes, #{limit_reason(max_bytes)}; stopped"
-        raise Failure, too_large if response.content_length && response.content_length > max_bytes
-
-        body = String.new(capacity: [response.content_length || 0, max_bytes].min, encoding: Encoding::BINARY)
-        response.read_body do |chunk|
-          raise Failure, too_large if body.bytesize + chunk.bytesize > max_bytes
-
-          body << chunk
-        end
-        body
+        Http::CappedBody.read(response, max_bytes)
+      rescue Http::CappedBody::TooLarge
+        raise Failure, "#{uri}: the server sends more than #{max_bytes} bytes, #{limit_reason(max_bytes)}; stopped"
       end
 
       def follow(uri, response, max_bytes, redirects)
