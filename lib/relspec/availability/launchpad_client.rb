@@ -7,6 +7,7 @@ require "openssl"
 require "timeout"
 require "uri"
 require_relative "../error"
+require_relative "../http/capped_body"
 
 module Relspec
   module Availability
@@ -39,14 +40,16 @@ module Relspec
 
       attr_reader :base
 
-      # +sleeper+ waits between attempts (tests pass one that records).
+      # +sleeper+ waits between attempts (tests pass one that records);
+      # +clock+ gives the time an HTTP-date Retry-After is counted from.
       def initialize(base: DEFAULT_BASE, timeout: TIMEOUT, retries: RETRIES, backoff: BACKOFF,
-                     sleeper: ->(seconds) { sleep(seconds) })
+                     sleeper: ->(seconds) { sleep(seconds) }, clock: -> { Time.now })
         @base = base.to_s.chomp("/")
         @timeout = timeout
         @retries = retries
         @backoff = backoff
         @sleeper = sleeper
+        @clock = clock
         @requests = 0
         @count = Mutex.new
       end
@@ -148,16 +151,9 @@ module Relspec
 
       # The body, read in pieces so that an endless one stops at the cap.
       def read_body(response, uri)
-        too_large = "Launchpad: #{uri}: the answer is larger than #{MAX_ANSWER_BYTES} bytes (MAX_ANSWER_BYTES); stopped"
-        raise Failure, too_large if response.content_length.to_i > MAX_ANSWER_BYTES
-
-        body = String.new(encoding: Encoding::BINARY)
-        response.read_body do |chunk|
-          raise Failure, too_large if body.bytesize + chunk.bytesize > MAX_ANSWER_BYTES
-
-          body << chunk
-        end
-        body.force_encoding(Encoding::UTF_8)
+        Http::CappedBody.read(response, MAX_ANSWER_BYTES).force_encoding(Encoding::UTF_8)
+      rescue Http::CappedBody::TooLarge
+        raise Failure, "Launchpad: #{uri}: the answer is larger than #{MAX_ANSWER_BYTES} bytes (MAX_ANSWER_BYTES); stopped"
       end
 
       def answer(response, uri, where)
@@ -177,7 +173,7 @@ module Relspec
         return nil if value.nil? || value.strip.empty?
         return Integer(value.strip, 10) if value.strip.match?(/\A\d+\z/)
 
-        [(Time.httpdate(value) - Time.now).ceil, 0].max
+        [(Time.httpdate(value) - @clock.call).ceil, 0].max
       rescue ArgumentError
         nil
       end
