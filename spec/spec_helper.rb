@@ -9,6 +9,8 @@ require_relative "support/workspace_helpers"
 require_relative "support/apt_repository_builder"
 require_relative "support/http_server"
 require_relative "support/launchpad_server"
+require_relative "support/streamed_body"
+require_relative "support/fixtures_needed"
 require_relative "support/release_file_editor"
 require_relative "support/release_fixture"
 require_relative "support/gem_builder"
@@ -29,4 +31,5 @@ RSpec.configure do |config|
   config.include CliRunner
   config.include SpecWriter
   config.include WorkspaceHelpers
+  config.include FixturesNeeded
 end

@@ -10,7 +10,7 @@ require_relative "../../support/rock_workspace"
 # stand-ins (GemBuilder): only their versions matter.
 RSpec.describe "gem versions against the osdeps' constraints" do
   before(:all) do
-    skip RockWorkspace.skip_reason unless RockWorkspace.available?
+    need_fixture(RockWorkspace.available?, RockWorkspace.skip_reason)
 
     @dir = Dir.mktmpdir("relspec-gem-constraint")
     @workspace = RockWorkspace.new(File.join(@dir, "ws"))

@@ -11,7 +11,7 @@ require_relative "../../support/rock_workspace"
 # ../shared/fixtures/rock-repos, loaded by autoproj).
 RSpec.describe "dependencies of a pinned package" do
   before(:all) do
-    skip RockWorkspace.skip_reason unless RockWorkspace.available?
+    need_fixture(RockWorkspace.available?, RockWorkspace.skip_reason)
 
     @dir = Dir.mktmpdir("relspec-pinned")
     @workspace = RockWorkspace.new(File.join(@dir, "ws"))

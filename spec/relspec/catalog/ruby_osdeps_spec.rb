@@ -10,7 +10,7 @@ require_relative "../../support/rock_workspace"
 # relspec's. utilrb's manifest.xml names the `ruby` osdep.
 RSpec.describe "Ruby-version-specific osdeps" do
   before(:all) do
-    skip RockWorkspace.skip_reason unless RockWorkspace.available?
+    need_fixture(RockWorkspace.available?, RockWorkspace.skip_reason)
 
     @dir = Dir.mktmpdir("relspec-ruby-osdeps")
     @workspace = RockWorkspace.new(File.join(@dir, "ws"))

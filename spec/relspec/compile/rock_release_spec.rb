@@ -17,13 +17,13 @@ RSpec.describe "a release of real Rock packages" do
   let(:release) { "rock" }
 
   before(:all) do
-    skip RockWorkspace.skip_reason unless RockWorkspace.available?
+    need_fixture(RockWorkspace.available?, RockWorkspace.skip_reason)
 
     @dir = Dir.mktmpdir("relspec-rock")
     @workspace = RockWorkspace.new(File.join(@dir, "ws"))
     @workspace.create
     @facets = RockGems.facets(File.join(@dir, "gems"))
-    skip "rice-3.0.0.gem is neither in #{RockGems::CACHE} nor fetchable" unless RockGems.rice(File.join(@dir, "gems"))
+    need_fixture(RockGems.rice(File.join(@dir, "gems")), "rice-3.0.0.gem is neither in #{RockGems::CACHE} nor fetchable")
     FileUtils.mkdir_p(File.join(@dir, "specs"))
     File.write(File.join(@dir, "specs", "rock.yml"), <<~YAML)
       release: rock

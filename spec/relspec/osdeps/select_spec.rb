@@ -118,7 +118,7 @@ RSpec.describe "relspec osdeps select" do
 
   it "reads the published Rock release data" do
     fixtures = File.expand_path("../shared/fixtures/rock-osdeps", CliRunner::ROOT)
-    skip "the real Rock osdeps files (#{fixtures}) are not beside this checkout" unless File.directory?(fixtures)
+    need_fixture(File.directory?(fixtures), "the real Rock osdeps files (#{fixtures}) are not beside this checkout")
 
     run = relspec("osdeps", "select", "--release", "master-20.06", "--arch", "amd64", "--os", "ubuntu,debian:18.04,bionic",
                   "--data", fixtures, "--output", File.join(@dir, "rock"))
