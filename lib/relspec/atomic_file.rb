@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require_relative "error"
+require_relative "temporaries"
 
 module Relspec
   # Writes a file so that readers see either the old or the new content,
@@ -19,7 +20,7 @@ module Relspec
 
     def write(path, content)
       dir = File.dirname(path)
-      temporary = File.join(dir, ".#{File.basename(path)}.#{Process.pid}.tmp")
+      temporary = Temporaries.path(dir, File.basename(path))
       File.open(temporary, File::WRONLY | File::CREAT | File::EXCL, 0o644) do |file|
         file.binmode
         file.write(content)

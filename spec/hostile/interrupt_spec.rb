@@ -7,7 +7,8 @@ require "digest"
 # and exit 130 (never a NameError from a half-loaded class), and the
 # temporaries of a killed compile are removed by the next one, which ends
 # with the tree a clean compile writes. Temporaries of a process that still
-# runs are left alone.
+# runs are left alone, those of an earlier process that had the same pid are
+# not.
 RSpec.describe "relspec under interrupts" do
   around do |example|
     Dir.mktmpdir("relspec-hostile-interrupt") do |dir|
@@ -54,8 +55,12 @@ RSpec.describe "relspec under interrupts" do
     target = File.join(@dir, "out", "h", "bionic-amd64")
     FileUtils.mkdir_p(target)
     # a temporary of a process that still runs (this one): not ours to remove
-    alive = File.join(target, ".rock-h-base-types.relspec-#{Process.pid}-0badcafe")
+    alive = Relspec::Temporaries.path(target, "rock-h-base-types")
     Dir.mkdir(alive)
+    # one left by an earlier process that had this one's pid (a reboot, a
+    # wrap-around): its start time is not this process's, so it is stale
+    reused = File.join(target, ".rock-h-base-types.relspec-#{Process.pid}-1-0badcafe")
+    Dir.mkdir(reused)
     pid, = spawn_compile("out")
     deadline = Process.clock_gettime(Process::CLOCK_MONOTONIC) + 60
     until Dir.glob(File.join(target, ".*.relspec-#{pid}-*")).any?
@@ -70,6 +75,7 @@ RSpec.describe "relspec under interrupts" do
     run = relspec("compile", @spec, "--out", "out", "--no-check", chdir: @dir)
     expect(run.exit_code).to eq(0), run.stderr
     expect(Dir.exist?(alive)).to be(true)
+    expect(Dir.exist?(reused)).to be(false)
     Dir.rmdir(alive)
     expect(tree("out")).to eq(tree("clean"))
   end

@@ -3,6 +3,7 @@
 require "fileutils"
 require_relative "../error"
 require_relative "../cache_dir"
+require_relative "../temporaries"
 
 module Relspec
   module Build
@@ -45,7 +46,9 @@ module Relspec
 
         mirrors = mirrors_or_raise
         FileUtils.mkdir_p(File.dirname(@path))
-        partial = "#{@path}.#{Process.pid}.partial.tar.zst"
+        # a killed mmdebstrap leaves hundreds of MB behind
+        Temporaries.sweep(File.dirname(@path))
+        partial = Temporaries.path(File.dirname(@path), File.basename(@path, ".tar.zst"), suffix: ".tar.zst")
         begin
           @tool.run("chroot #{@target}", ["mmdebstrap", "--variant=buildd", "--mode=unshare", "--arch=#{@target.arch}",
                                           "--include=#{INCLUDE.join(',')}",
