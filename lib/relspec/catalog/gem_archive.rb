@@ -4,6 +4,8 @@ require "digest"
 require "fileutils"
 require "tmpdir"
 require "zlib"
+require "psych"
+require "rubygems/package"
 require_relative "../apt/fetcher"
 require_relative "../atomic_file"
 require_relative "../error"
@@ -75,6 +77,19 @@ module Relspec
 
       def native?
         !spec.extensions.empty?
+      end
+
+      # Folders of a gem whose C/C++ headers serve only its own build.
+      PRIVATE_HEADER_DIRS = %w[ext test tests spec sample samples example examples].freeze
+      HEADER = /[.](h|hh|hpp|hxx|ipp)\z/
+
+      # True for a gem with a C extension that also installs headers for
+      # other code to compile against (Rice: rice/*.hpp, which include
+      # ruby.h): what builds against it needs Ruby's headers too.
+      def ships_headers?
+        native? && spec.files.any? do |file|
+          file.match?(HEADER) && !PRIVATE_HEADER_DIRS.include?(file.split("/").first)
+        end
       end
 
       # Runtime dependencies: [[name, requirement]].

@@ -45,11 +45,16 @@ module Relspec
         ([debhelper] + BUILD_TOOLS.fetch(build_type, []) + own + os).uniq
       end
 
+      # What a gem that ships headers for other code (GemArchive#ships_headers?)
+      # needs at run time, although it is a build tool elsewhere: its headers
+      # include Ruby's.
+      HEADER_GEM = %w[ruby-dev].freeze
+
       # +architecture+: "any" adds the shlibs substitution variable.
-      def depends(build_type, architecture, own, os)
+      def depends(build_type, architecture, own, os, ships_headers: false)
         base = architecture == "any" ? ["${shlibs:Depends}", "${misc:Depends}"] : ["${misc:Depends}"]
         base += ["ruby"] if %w[ruby gem].include?(build_type)
-        (base + ((own + os) - BUILD_ONLY)).uniq
+        (base + ((own + os) - BUILD_ONLY) + (ships_headers ? HEADER_GEM : [])).uniq
       end
     end
   end

@@ -217,7 +217,8 @@ module Relspec
       end
 
       def depends
-        ControlRelations.depends(@in.fetch(:package).build_type, architecture, own_relations, os_relations)
+        ControlRelations.depends(@in.fetch(:package).build_type, architecture, own_relations, os_relations,
+                                 ships_headers: @in[:gem]&.ships_headers? || false)
       end
 
       def homepage

@@ -4,13 +4,14 @@ require "spec_helper"
 require "yaml"
 require_relative "../../support/rock_workspace"
 require_relative "../../support/rock_gems"
-require_relative "../../support/host_build"
+require_relative "../../support/unpacked_root"
 
 # Real Rock packages, as a release maintainer compiles them: base/cmake,
 # base/logging, base/types and utilrb from their real repositories (git
 # bundles in ../shared), described by the project's own package sets,
-# compiled for bookworm/amd64 with no overlays, every package built with
-# dpkg-buildpackage in dependency order and installed, then used through
+# compiled for bookworm/amd64 with no overlays, every package built by
+# `relspec build` with sbuild in a clean chroot (in dependency order), the
+# .debs unpacked at /opt in a private mount namespace, then used through
 # the packages' env.sh only. The release is compiled and built once for
 # the whole group (base/types takes most of the time).
 RSpec.describe "a release of real Rock packages" do
@@ -40,13 +41,26 @@ RSpec.describe "a release of real Rock packages" do
 
     @target = File.join(@dir, "out", "rock", "bookworm-amd64")
     @plan = YAML.safe_load(File.read(File.join(@target, "plan.yml")))
-    @host = HostBuild.new(File.join(@dir, "build"))
-    @debs = @plan.fetch("builds").to_h do |build|
-      [build.fetch("package"), @host.build_and_install(File.join(@target, build.fetch("dsc")))]
+    @build = relspec("build", "specs/rock.yml", "--out", "out", "--backend", "sbuild", "--jobs", "2", chdir: @dir)
+    @results = YAML.safe_load(File.read(File.join(@target, "build-results.yml")))
+    raise "build failed:\n#{@build.stdout}#{@build.stderr}#{failed_logs}" unless @build.exit_code.zero?
+
+    @host = UnpackedRoot.new(File.join(@dir, "installed"))
+    @debs = @results.fetch("packages").values.to_h do |record|
+      debs = record.fetch("files").map { |file| File.join(@target, file.fetch("name")) }.grep(/[.]deb\z/)
+      debs.each { |deb| @host.install(deb) }
+      [record.fetch("package"), debs]
     end
   end
 
   after(:all) { FileUtils.rm_rf(@dir) if @dir }
+
+  # The end of the log of each package that did not build, for the failure message.
+  def failed_logs
+    @results.fetch("packages").values.select { |record| record["status"] == "failed" }.map do |record|
+      "\n--- #{record['log']}:\n#{File.readlines(File.join(@target, record['log'])).last(60).join}"
+    end.join
+  end
 
   def debian_file(source, path)
     tarball = Dir.glob(File.join(@target, source, "*.debian.tar.xz")).first
@@ -63,8 +77,26 @@ RSpec.describe "a release of real Rock packages" do
   it "compiles every package of the layout, and facets as a gem of the release" do
     expect(@plan.fetch("builds").map { |build| build["package"] })
       .to eq(%w[base/cmake facets rice base/logging utilrb base/types])
-    expect(@debs.values.map(&:size).uniq).to eq([1])
+    # (one .deb per package, besides the -dbgsym ones sbuild makes of compiled code)
+    expect(@debs.values.map { |debs| debs.grep_v(/-dbgsym_/).size }.uniq).to eq([1])
     expect(Dir.exist?(File.join(@workspace.root, "overlays"))).to be(false)
+  end
+
+  # In a clean chroot, a package builds only when its debian/control names
+  # every build-dependency: those of the distribution come from its archive,
+  # those of the release from the .debs built before it in the same run.
+  it "builds every package with sbuild in a clean chroot" do
+    expect(@results.fetch("backend")).to eq("sbuild")
+    expect(@results.fetch("packages").values.map { |record| record["status"] }.uniq).to eq(["built"])
+    log = File.read(File.join(@target, "logs", "rock-rock-base-types.log"))
+    expect(log).to include("--chroot-mode=unshare")
+    %w[rock-rock-base-cmake rock-rock-base-logging rock-rock-ruby-rice].each do |dependency|
+      expect(log).to match(/Unpacking #{dependency} /)
+    end
+    # rice's headers include ruby.h: base/types' bindings find Ruby only because rice brings ruby-dev
+    binary = debian_file("rock-rock-ruby-rice", "control").split("\n\n").last
+    expect(binary[/^Depends:.*?(?=\n\S)/m].split(/,\s*/)).to include("ruby-dev")
+    expect(log).to match(/Unpacking ruby3[.]\d+-dev /)
   end
 
   it "builds base/types against its whole dependency closure and with the package set's defines" do

@@ -5,8 +5,7 @@ require "json"
 require "yaml"
 
 # The shipped example for real on this machine's distribution (bookworm/amd64):
-# demo-base compiled, built (StandInBuild stands in for `relspec build
-# --backend host` until it is merged) and published; demo-child planned against
+# demo-base compiled, built (`relspec build --backend host`) and published; demo-child planned against
 # that repository, so it builds only base/types and its reverse dependencies,
 # built against demo-base's packages and published next to them. Then apt
 # installs every package of demo-child (simulated, through a private apt
@@ -59,8 +58,7 @@ RSpec.describe "the example releases, built and published on bookworm" do
 
   it "builds only what demo-child changes, and apt installs all of demo-child" do
     run!("compile", "specs/demo-base.yml", "--out", "out")
-    base = StandInBuild.new(File.join(@dir, "out"), "demo-base", target_name, File.join(@dir, "scratch-base"))
-    base.run
+    run!("build", "specs/demo-base.yml", "--out", "out", "--backend", "host", "--target", target_name)
     run!("publish", "specs/demo-base.yml", "--out", "out", "--target", target_name)
     expect(deb_names("demo-base").size).to eq(7)
 
@@ -71,9 +69,7 @@ RSpec.describe "the example releases, built and published on bookworm" do
     expect(decisions.values.tally).to eq("build" => 3, "inherit" => 4)
 
     run!("compile", "specs/demo-child.yml", "--out", "out")
-    child = StandInBuild.new(File.join(@dir, "out"), "demo-child", target_name, File.join(@dir, "scratch-child"),
-                             installed: Dir.glob(File.join(base.target_dir, "results", "*", "*.deb")))
-    child.run
+    run!("build", "specs/demo-child.yml", "--out", "out", "--backend", "host", "--target", target_name)
     run!("publish", "specs/demo-child.yml", "--out", "out", "--target", target_name)
     names = deb_names("demo-child")
     expect(names.grep(/\Arock-demo-child-/).size).to eq(3)
@@ -89,10 +85,12 @@ RSpec.describe "the example releases, built and published on bookworm" do
       end
     end
 
-    # demo-child's driver, really installed (unpacked at /opt in the build's
-    # private mount namespace), finds demo-base's logging through env.sh
+    # demo-child's driver, really installed (unpacked at /opt in a private
+    # mount namespace), finds demo-base's logging through env.sh
+    host = UnpackedRoot.new(File.join(@dir, "installed"))
+    Dir.glob(File.join(@dir, "out", "demo-{base,child}", "*", "results", "*", "*.deb")).each { |deb| host.install(deb) }
     driver = "/opt/rock/demo-child/rock-demo-child-drivers-iodrivers-base"
-    output, status = child.host.shell(". #{driver}/env.sh && echo \"$CMAKE_PREFIX_PATH\"")
+    output, status = host.shell(". #{driver}/env.sh && echo \"$CMAKE_PREFIX_PATH\"")
     expect(status).to be_success, output
     expect(output.strip.split(":")).to include(driver, "/opt/rock/demo-base/rock-demo-base-base-logging",
                                                "/opt/rock/demo-child/rock-demo-child-base-types")

@@ -5,8 +5,8 @@ require "yaml"
 require "relspec/publish"
 
 # `relspec publish` end to end, with real parts: the demo workspace compiled
-# by relspec, built with dpkg-buildpackage (StandInBuild, until `relspec
-# build` is merged), published into a fresh reprepro repository and read
+# by relspec, built by `relspec build --backend host` (dpkg-buildpackage),
+# published into a fresh reprepro repository and read
 # back by apt-get and by relspec's own planner.
 RSpec.describe "relspec publish" do
   def target_name
@@ -25,9 +25,11 @@ RSpec.describe "relspec publish" do
     run = relspec("compile", "specs/solo.yml", "--out", "out", chdir: @dir)
     raise run.stderr unless run.status.success?
 
-    @build = StandInBuild.new(File.join(@dir, "out"), "solo", target_name, File.join(@dir, "scratch"))
-    @build.run
-    @results = File.join(@build.target_dir, "build-results.yml")
+    build = relspec("build", "specs/solo.yml", "--out", "out", "--backend", "host", chdir: @dir)
+    raise build.stdout + build.stderr unless build.status.success?
+
+    @target_dir = File.join(@dir, "out", "solo", target_name.tr("/", "-"))
+    @results = File.join(@target_dir, "build-results.yml")
     @pristine = File.read(@results)
   end
 
@@ -131,7 +133,7 @@ RSpec.describe "relspec publish" do
   end
 
   it "refuses a package whose built file changed since it was recorded, before touching the repository" do
-    deb = Dir.glob(File.join(@build.target_dir, "results", cmake, "*.deb")).first
+    deb = Dir.glob(File.join(@target_dir, "results", cmake, "*.deb")).first
     original = File.binread(deb)
     File.binwrite(deb, "#{original}x")
     run = publish
@@ -146,7 +148,7 @@ RSpec.describe "relspec publish" do
   it "refuses a file the pool holds with other bytes, naming both, and includes nothing" do
     expect(publish.exit_code).to eq(0)
     before = repository_state
-    deb = Dir.glob(File.join(@build.target_dir, "results", logging, "*.deb")).first
+    deb = Dir.glob(File.join(@target_dir, "results", logging, "*.deb")).first
     original = File.binread(deb)
     File.binwrite(deb, "#{original}x")
     edit_results do |data|
@@ -207,7 +209,7 @@ RSpec.describe "relspec publish" do
     FileUtils.mkdir_p(File.join(repository, "conf"))
     Relspec::Publish::RepositoryConfig.new(release: "solo", targets: [Relspec::Plan::Target.parse(target_name)]).files
                                       .each { |name, text| File.write(File.join(repository, "conf", name), text) }
-    dsc = Dir.glob(File.join(@build.target_dir, cmake, "*.dsc")).first
+    dsc = Dir.glob(File.join(@target_dir, cmake, "*.dsc")).first
     output, status = Open3.capture2e("reprepro", "-b", repository, "includedsc", "bookworm", dsc)
     expect(status).to be_success, output
 
@@ -220,7 +222,7 @@ RSpec.describe "relspec publish" do
   end
 
   it "reports a reprepro failure as one message with the tool, its exit status and output" do
-    deb = Dir.glob(File.join(@build.target_dir, "results", logging, "*.deb")).first
+    deb = Dir.glob(File.join(@target_dir, "results", logging, "*.deb")).first
     original = File.binread(deb)
     File.binwrite(deb, "not a Debian package\n")
     edit_results do |data|
