@@ -32,4 +32,11 @@ RSpec.configure do |config|
   config.include SpecWriter
   config.include WorkspaceHelpers
   config.include FixturesNeeded
+
+  # The hostile-input corpus: no input may make relspec use more than this
+  # (issue 12; docs/limits.md).
+  hostile = { file_path: %r{spec/(hostile/|cli/bad_specs_spec)} }
+  config.after(:each, **hostile) do
+    expect(relspec_runs.map(&:max_rss_kib)).to all(be < CliRunner::HOSTILE_MAX_RSS_KIB)
+  end
 end
