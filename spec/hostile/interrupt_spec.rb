@@ -10,13 +10,14 @@ require "digest"
 # runs are left alone, those of an earlier process that had the same pid are
 # not.
 RSpec.describe "relspec under interrupts" do
-  around do |example|
-    Dir.mktmpdir("relspec-hostile-interrupt") do |dir|
-      @dir = dir
-      @spec = ReleaseFixture.new(dir).standalone("h", select: ["base/types", "tools/orocos.rb"], targets: "bionic: [amd64]")
-      example.run
-    end
+  # One fixture for both (making it is most of the time); each example
+  # writes output folders of its own.
+  before(:all) do
+    @dir = Dir.mktmpdir("relspec-hostile-interrupt")
+    @spec = ReleaseFixture.new(@dir).standalone("h", select: ["base/types", "tools/orocos.rb"], targets: "bionic: [amd64]")
   end
+
+  after(:all) { FileUtils.rm_rf(@dir) }
 
   def spawn_compile(out)
     reader, writer = IO.pipe
@@ -35,7 +36,7 @@ RSpec.describe "relspec under interrupts" do
 
   it "answers SIGINT with 'interrupted' and 130 at every moment of a compile" do
     (1..12).map { |i| i * 0.15 }.each do |delay|
-      pid, stderr = spawn_compile("out")
+      pid, stderr = spawn_compile("interrupted")
       sleep(delay)
       Process.kill("INT", pid)
       _, status = Process.wait2(pid)

@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require_relative "../error"
+require_relative "interrupt_watch"
 
 module Relspec
   module CLI
@@ -12,9 +13,25 @@ module Relspec
       EXIT_BUG = 70
       EXIT_INTERRUPTED = 130
 
-      def self.wrap(stderr:, debug:)
+      def self.wrap(stderr:, debug:, &block)
+        watch = InterruptWatch.new
+        outcome(stderr, debug, watch) { watch.watch(&block) }
+      end
+
+      def self.outcome(stderr, debug, watch)
         yield
         0
+      rescue Interrupt
+        interrupted(stderr)
+      rescue StandardError, ScriptError => e
+        return interrupted(stderr) if watch.received? || interrupted?(e)
+
+        failure(e, stderr, debug)
+      end
+
+      # Re-raised so that each kind of failure has its own rescue clause.
+      def self.failure(error, stderr, debug)
+        raise error
       rescue InvalidInput => e
         stderr.puts(e.diagnostics.map(&:to_s))
         stderr.puts(Summary.of(e.diagnostics))
@@ -24,17 +41,14 @@ module Relspec
 
         stderr.puts("relspec: error: #{e.message}")
         e.status_code
+      rescue Errno::EPIPE # a reader that stopped (`relspec show | head`)
+        0
       rescue SystemCallError => e
         raise if debug
 
         stderr.puts("relspec: error: #{e.message.sub(/ @ \w+/, '')}")
         EXIT_USER_ERROR
-      rescue Interrupt
-        interrupted(stderr)
-      rescue Errno::EPIPE
-        0
-      rescue StandardError => e
-        return interrupted(stderr) if interrupted?(e)
+      rescue StandardError, ScriptError => e
         raise if debug
 
         stderr.puts("relspec: internal error: #{e.class}: #{e.message}")
