@@ -33,6 +33,14 @@ RSpec.configure do |config|
   config.include WorkspaceHelpers
   config.include FixturesNeeded
 
+  # `RSpec.describe X, :tmpdir`: each example gets an empty folder in @dir.
+  config.around(:each, :tmpdir) do |example|
+    Dir.mktmpdir("relspec-test") do |dir|
+      @dir = dir
+      example.run
+    end
+  end
+
   # The hostile-input corpus: no input may make relspec use more than this
   # (issue 12; docs/limits.md).
   hostile = { file_path: %r{spec/(hostile/|cli/bad_specs_spec)} }

@@ -7,14 +7,7 @@ require "spec_helper"
 # relspec cannot use are refused with one message, exit 1, at once. The
 # alias bomb, deep nesting, bad encodings and `select: [[x]]` live in the
 # bad-spec corpus (spec/fixtures/specs/bad/*.err).
-RSpec.describe "relspec on hostile local input" do
-  around do |example|
-    Dir.mktmpdir("relspec-hostile-input") do |dir|
-      @dir = dir
-      example.run
-    end
-  end
-
+RSpec.describe "relspec on hostile local input", :tmpdir do
   def validate(path)
     run = relspec("validate", path, chdir: @dir)
     expect(run.exit_code).to eq(1)

@@ -4,14 +4,7 @@ require "spec_helper"
 
 # Which leftovers a sweep removes: those of processes that are gone, told by
 # pid and start time; never another file, never a live process's work.
-RSpec.describe Relspec::Temporaries do
-  around do |example|
-    Dir.mktmpdir("relspec-temporaries") do |dir|
-      @dir = dir
-      example.run
-    end
-  end
-
+RSpec.describe Relspec::Temporaries, :tmpdir do
   # A pid no process has now: one that just ended.
   def dead_pid
     pid = Process.spawn("true")

@@ -6,14 +6,7 @@ require_relative "../../support/gem_builder"
 
 # Which gems hand headers to other code (and so need Ruby's headers wherever
 # they are used), on real .gem files.
-RSpec.describe Relspec::Catalog::GemArchive do
-  around do |example|
-    Dir.mktmpdir("relspec-gem-archive") do |dir|
-      @dir = dir
-      example.run
-    end
-  end
-
+RSpec.describe Relspec::Catalog::GemArchive, :tmpdir do
   def archive(name, **options)
     path = GemBuilder.build(@dir, name, "1.0.0", **options)
     described_class.new(name, "1.0.0", path, "test")

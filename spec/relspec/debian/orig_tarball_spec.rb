@@ -3,14 +3,7 @@
 require "spec_helper"
 require "relspec/debian/orig_tarball"
 
-RSpec.describe Relspec::Debian::OrigTarball do
-  around do |example|
-    Dir.mktmpdir("relspec-orig") do |dir|
-      @dir = dir
-      example.run
-    end
-  end
-
+RSpec.describe Relspec::Debian::OrigTarball, :tmpdir do
   def listing(path)
     output, status = Open3.capture2("tar", "-tzvf", path)
     expect(status).to be_success
