@@ -161,6 +161,26 @@ RSpec.describe "relspec diff" do
                                 "commits #{tagged[0, 7]}..#{head[0, 7]} (1 commit)")
   end
 
+  it "says why a dependent of a changed package gets a new Debian revision with the same source" do
+    # Same change as above: drivers/iodrivers_base and tools/orocos.rb were
+    # built before (they depend on the pinned base/types) and are built again
+    # from the same commit, only because base/types changed version.
+    change_child(CHILD.sub("{ tag: v2.0.0 }", "{ branch: master }") +
+                 "blacklist: [{ match: base/types, reason: the child needs its own build }]\n")
+    moved = "base/types changed version (2.0.20200302.140000-1~bionic → 2.0.20200601.103000-1~bionic)"
+    text = diff.stdout
+    expect(text).to include("    version  drivers/iodrivers_base: build rock-child-drivers-iodrivers-base 1.0.20200603.091500-1~bionic → " \
+                            "build rock-child-drivers-iodrivers-base 1.0.20200603.091500-2~bionic\n" \
+                            "      rebuilt because #{moved}, own source unchanged; built because depends on base/types ← " \
+                            'blacklisted by "base/types" (the child needs its own build)')
+    markdown = diff("--format", "markdown").stdout
+    expect(markdown).to include("- 2 rebuilt because #{moved}: `drivers/iodrivers_base`, `tools/orocos.rb` (bionic/amd64)")
+    expect(markdown).to include('- 1 rebuilt because base/types is blacklisted by "base/types" (the child needs its own build): `base/types`')
+    changes = target(JSON.parse(diff("--format", "json").stdout), "child", "bionic/amd64")["changes"]
+    expect(changes.to_h { |c| [c["package"], c["rebuilt_because"]] })
+      .to eq("base/types" => nil, "drivers/iodrivers_base" => moved, "tools/orocos.rb" => moved)
+  end
+
   it "shows an added target with everything it builds" do
     change_child(CHILD.sub("{ bionic: [amd64] }", "{ bionic: [amd64], buster: [amd64] }"))
     text = formats("target")
