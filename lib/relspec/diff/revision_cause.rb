@@ -10,8 +10,11 @@ module Relspec
     # which says why the package is built, not why it is built again.
     module RevisionCause
       # When no dependency on the cause chain changed: the lock does not
-      # record what else the Debian inputs hold.
-      INPUTS = "its Debian inputs changed (a dependency, the release's settings or the packaging)"
+      # record the package's other dependencies nor what else its Debian
+      # inputs hold, so the other changes of the target are only candidates.
+      INPUTS = "its Debian inputs changed (a dependency, the release's settings or the packaging"
+      # Candidates named before "and N more".
+      CANDIDATES = 3
 
       module_function
 
@@ -22,7 +25,22 @@ module Relspec
         return nil unless revision_bump?(change)
 
         dependency = dependencies(change).filter_map { |name| changes[name] }.first
-        dependency ? moved(dependency) : INPUTS
+        dependency ? moved(dependency) : inputs(change, changes)
+      end
+
+      # "its Debian inputs changed (…; changed on this target and maybe among
+      # its dependencies: base/logging)"
+      def inputs(change, changes)
+        # Other revision bumps are consequences (dependents), not candidates.
+        others = changes.values.select do |other|
+          other.package != change.package && !revision_bump?(other) &&
+            (other.old&.version != other.new&.version || other.old&.deb != other.new&.deb)
+        end.map(&:package).sort
+        return "#{INPUTS})" if others.empty?
+
+        shown = others.first(CANDIDATES)
+        shown << "#{others.size - CANDIDATES} more" if others.size > CANDIDATES
+        "#{INPUTS}; changed on this target and maybe among its dependencies: #{shown.join(', ')})"
       end
 
       def revision_bump?(change)

@@ -36,9 +36,9 @@ module Relspec
         chain.empty? ? reason : "#{reason}; built because #{chain}"
       end
 
-      # "rebuilt because base/types changed version (… → …), own source unchanged"
+      # "rebuilt with the same source because base/types changed version (… → …)"
       def rebuilt_because(change)
-        "rebuilt because #{change.rebuilt_because}, own source unchanged"
+        "rebuilt with the same source because #{change.rebuilt_because}"
       end
 
       # "3 decisions (bionic/amd64, buster/amd64)"

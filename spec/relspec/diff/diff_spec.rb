@@ -171,7 +171,7 @@ RSpec.describe "relspec diff" do
     text = diff.stdout
     expect(text).to include("    version  drivers/iodrivers_base: build rock-child-drivers-iodrivers-base 1.0.20200603.091500-1~bionic → " \
                             "build rock-child-drivers-iodrivers-base 1.0.20200603.091500-2~bionic\n" \
-                            "      rebuilt because #{moved}, own source unchanged; built because depends on base/types ← " \
+                            "      rebuilt with the same source because #{moved}; built because depends on base/types ← " \
                             'blacklisted by "base/types" (the child needs its own build)')
     markdown = diff("--format", "markdown").stdout
     expect(markdown).to include("- 2 rebuilt because #{moved}: `drivers/iodrivers_base`, `tools/orocos.rb` (bionic/amd64)")

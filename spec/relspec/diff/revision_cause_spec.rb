@@ -25,7 +25,7 @@ RSpec.describe Relspec::Diff::RevisionCause do
     expect(changes["drivers/io"].rebuilt_because).to eq("base/types changed version (2.0.1-1~bionic → 2.0.2-1~bionic)")
     expect(changes["base/types"].rebuilt_because).to be_nil # its own source moved
     expect(Relspec::Diff::Wording.causes(changes["drivers/io"]))
-      .to eq("rebuilt because base/types changed version (2.0.1-1~bionic → 2.0.2-1~bionic), own source unchanged; " \
+      .to eq("rebuilt with the same source because base/types changed version (2.0.1-1~bionic → 2.0.2-1~bionic); " \
              "built because depends on base/types ← #{blacklisted}")
     expect(changes["drivers/io"].to_h["rebuilt_because"]).to start_with("base/types changed version")
   end
@@ -41,9 +41,22 @@ RSpec.describe Relspec::Diff::RevisionCause do
     expect(changes["tools/x"].rebuilt_because).to eq("base/logging changed version (1.1-1~bionic → 1.2-1~bionic)")
   end
 
-  it "says the Debian inputs changed when no dependency on the chain moved" do
+  it "says the Debian inputs changed when no dependency on the chain moved, naming the target's other changes as candidates" do
     changes = compare({ "tools/x" => built("0.9-1~bionic", blacklisted) }, { "tools/x" => built("0.9-2~bionic", blacklisted) })
-    expect(changes["tools/x"].rebuilt_because).to eq(described_class::INPUTS)
+    expect(changes["tools/x"].rebuilt_because)
+      .to eq("its Debian inputs changed (a dependency, the release's settings or the packaging)")
+
+    others = %w[a b c d].to_h { |name| [name, built("1-1~bionic")] }
+    # "same": only its cause changed; "bumped": a revision bump itself (a
+    # consequence, not a candidate).
+    changes = compare(others.merge("tools/x" => built("0.9-1~bionic", blacklisted), "same" => built("5-1~bionic"),
+                                   "bumped" => built("7-1~bionic")),
+                      others.transform_values { built("2-1~bionic") }
+                            .merge("tools/x" => built("0.9-2~bionic", blacklisted), "same" => built("5-1~bionic", "moved"),
+                                   "bumped" => built("7-2~bionic")))
+    expect(changes["tools/x"].rebuilt_because)
+      .to eq("its Debian inputs changed (a dependency, the release's settings or the packaging; " \
+             "changed on this target and maybe among its dependencies: a, b, c, 1 more)")
   end
 
   it "leaves new sources and inherited packages to the commit range and the ancestor" do
