@@ -4,8 +4,10 @@ module Relspec
   module Diff
     # What changed for one package on one target. +kind+ is one of KINDS;
     # +old+ and +new+ are Diff::Decision (nil when added or removed);
-    # +commits+ is a CommitRange when the package's source moved.
-    PackageChange = Struct.new(:package, :kind, :old, :new, :commits, keyword_init: true) do
+    # +commits+ is a CommitRange when the package's source moved;
+    # +rebuilt_because+ says why a build got a new Debian revision with the
+    # same source (RevisionCause), nil otherwise.
+    PackageChange = Struct.new(:package, :kind, :old, :new, :commits, :rebuilt_because, keyword_init: true) do
       # The cause chain that explains the change: the new one when the
       # package is built now, the old one when it stopped being built.
       def causes
@@ -19,9 +21,13 @@ module Relspec
         new&.built? && !(old&.built? && old.version == new.version)
       end
 
+      def with_rebuilt_because(cause)
+        PackageChange.new(package: package, kind: kind, old: old, new: new, commits: commits, rebuilt_because: cause).freeze
+      end
+
       def to_h
         { "package" => package, "change" => kind, "old" => old&.to_h, "new" => new&.to_h,
-          "commits" => commits&.to_h }.compact
+          "commits" => commits&.to_h, "rebuilt_because" => rebuilt_because }.compact
       end
     end
 

@@ -88,9 +88,13 @@ module Relspec
         groups = Hash.new { |hash, key| hash[key] = [] }
         targets.each do |target|
           target.changes.each do |change|
-            next unless change.rebuild? && !change.new.causes.empty?
+            next unless change.rebuild? && (change.rebuilt_because || !change.new.causes.empty?)
 
-            groups[plain_cause(change.new, change.package)] << [target.target, change.package]
+            # A new revision of the same source is there because of what
+            # moved (a dependency's version), not because of why the
+            # package is built at all.
+            cause = change.rebuilt_because || plain_cause(change.new, change.package)
+            groups[cause] << [target.target, change.package]
           end
         end
         groups.sort_by { |text, members| [-members.map(&:last).uniq.size, text] }

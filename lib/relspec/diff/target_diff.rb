@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require_relative "package_change"
+require_relative "revision_cause"
 
 module Relspec
   module Diff
@@ -22,6 +23,7 @@ module Relspec
         changes = (old.keys | new.keys).filter_map do |package|
           change_of(package, old[package], new[package], commits)
         end
+        changes = with_revision_causes(changes)
         changes.sort_by! { |change| [KINDS.keys.index(change.kind), change.package] }
         status ||= changes.empty? ? "unchanged" : "changed"
         new(target, status, changes, new.values.count(&:built?), old.values.count(&:built?))
@@ -33,6 +35,15 @@ module Relspec
 
         range = old && new && old.version != new.version ? commits.call(package) : nil
         PackageChange.new(package: package, kind: kind, old: old, new: new, commits: range).freeze
+      end
+
+      # A revision bump is explained by the other changes of the target.
+      def self.with_revision_causes(changes)
+        by_package = changes.to_h { |change| [change.package, change] }
+        changes.map do |change|
+          cause = RevisionCause.of(change, by_package)
+          cause ? change.with_rebuilt_because(cause) : change
+        end
       end
 
       def self.kind_of(old, new)

@@ -36,7 +36,8 @@ module Relspec
           target.changes.each do |change|
             label = KINDS.fetch(change.kind).ljust(width)
             lines << "    #{paint(KIND_COLOURS.fetch(change.kind, :dim), label)}  #{change.package}: #{Wording.change(change)}"
-            lines << "      #{Wording.causes(change)}" unless change.causes.empty?
+            why = Wording.causes(change)
+            lines << "      #{why}" unless why.empty?
           end
           target.osdeps.each do |package, old, new|
             lines << "    osdeps #{package}: #{old || 'none'} → #{new || 'none'}"

@@ -26,9 +26,19 @@ module Relspec
         change.commits ? "#{text}; commits #{change.commits}" : text
       end
 
-      # The cause chain on one line, nearest step first.
+      # The cause chain on one line, nearest step first; for a new revision
+      # of the same source, why it was rebuilt comes first.
       def causes(change)
-        change.causes.join(" ← ")
+        chain = change.causes.join(" ← ")
+        return chain unless change.rebuilt_because
+
+        reason = rebuilt_because(change)
+        chain.empty? ? reason : "#{reason}; built because #{chain}"
+      end
+
+      # "rebuilt with the same source because base/types changed version (… → …)"
+      def rebuilt_because(change)
+        "rebuilt with the same source because #{change.rebuilt_because}"
       end
 
       # "3 decisions (bionic/amd64, buster/amd64)"

@@ -138,6 +138,49 @@ RSpec.describe "relspec diff" do
     expect(text).to include("osdeps base/types: rock-child-base-types → rock-base-base-types")
   end
 
+  it "shows a package built on both sides from other commits: old → new version, commit range and count" do
+    # The pin moves to the branch head and base/types is blacklisted, so the
+    # child builds it from the head commit where it built the v2.0.0 tag.
+    change_child(CHILD.sub("{ tag: v2.0.0 }", "{ branch: master }") +
+                 "blacklist: [{ match: base/types, reason: the child needs its own build }]\n")
+    text = formats("built_version")
+    builder = @fixture.builder
+    head = builder.commit_of("base/types")
+    tagged = builder.git(builder.source_dir("base/types"), "rev-list", "-n", "1", "v2.0.0").strip
+    expect(head).not_to eq(tagged)
+    expect(text).to include("base/types: build rock-child-base-types 2.0.20200302.140000-1~bionic → " \
+                            "build rock-child-base-types 2.0.20200601.103000-1~bionic; " \
+                            "commits #{tagged[0, 7]}..#{head[0, 7]} (1 commit)")
+    change = target(JSON.parse(diff("--format", "json").stdout), "child", "bionic/amd64")["changes"]
+             .find { |c| c["package"] == "base/types" }
+    expect(change).to include("change" => "version", "commits" => { "from" => tagged, "to" => head, "count" => 1 })
+    expect([change["old"]["version"], change["new"]["version"]])
+      .to eq(%w[2.0.20200302.140000-1~bionic 2.0.20200601.103000-1~bionic])
+    markdown = diff("--format", "markdown").stdout
+    expect(markdown).to include("2.0.20200302.140000-1~bionic → build rock-child-base-types 2.0.20200601.103000-1~bionic; " \
+                                "commits #{tagged[0, 7]}..#{head[0, 7]} (1 commit)")
+  end
+
+  it "says why a dependent of a changed package gets a new Debian revision with the same source" do
+    # Same change as above: drivers/iodrivers_base and tools/orocos.rb were
+    # built before (they depend on the pinned base/types) and are built again
+    # from the same commit, only because base/types changed version.
+    change_child(CHILD.sub("{ tag: v2.0.0 }", "{ branch: master }") +
+                 "blacklist: [{ match: base/types, reason: the child needs its own build }]\n")
+    moved = "base/types changed version (2.0.20200302.140000-1~bionic → 2.0.20200601.103000-1~bionic)"
+    text = diff.stdout
+    expect(text).to include("    version  drivers/iodrivers_base: build rock-child-drivers-iodrivers-base 1.0.20200603.091500-1~bionic → " \
+                            "build rock-child-drivers-iodrivers-base 1.0.20200603.091500-2~bionic\n" \
+                            "      rebuilt with the same source because #{moved}; built because depends on base/types ← " \
+                            'blacklisted by "base/types" (the child needs its own build)')
+    markdown = diff("--format", "markdown").stdout
+    expect(markdown).to include("- 2 rebuilt because #{moved}: `drivers/iodrivers_base`, `tools/orocos.rb` (bionic/amd64)")
+    expect(markdown).to include('- 1 rebuilt because base/types is blacklisted by "base/types" (the child needs its own build): `base/types`')
+    changes = target(JSON.parse(diff("--format", "json").stdout), "child", "bionic/amd64")["changes"]
+    expect(changes.to_h { |c| [c["package"], c["rebuilt_because"]] })
+      .to eq("base/types" => nil, "drivers/iodrivers_base" => moved, "tools/orocos.rb" => moved)
+  end
+
   it "shows an added target with everything it builds" do
     change_child(CHILD.sub("{ bionic: [amd64] }", "{ bionic: [amd64], buster: [amd64] }"))
     text = formats("target")
