@@ -26,6 +26,9 @@ module Relspec
       NAME = "host"
       # What dpkg-checkbuilddeps prints before the relations it misses.
       UNMET = /Unmet build dependencies: (.*)$/
+      # It separates those relations by spaces (not commas): "a (>= 1) b | c".
+      PACKAGE = /[^\s(|]+(?:\s*\([^)]*\))?/
+      RELATION = /#{PACKAGE}(?:\s*\|\s*#{PACKAGE})*/
 
       def initialize(tool)
         @tool = tool
@@ -65,13 +68,14 @@ module Relspec
                             "see #{request.log}"
         local = (request.repositories.flat_map { |repository| repository.pool_debs(request.target) } +
                  request.local_debs).to_h { |deb| [File.basename(deb).split("_").first, deb] }
-        missing = unmet.split(/,\s*/).reject { |relation| relation.split(/\s*\|\s*/).any? { |alt| local[alt[/\A[^\s(:]+/]] } }
+        relations = unmet.scan(RELATION)
+        missing = relations.reject { |relation| relation.split(/\s*\|\s*/).any? { |alt| local[alt[/\A[^\s(:]+/]] } }
         unless missing.empty?
           raise BuildError, "#{request.source}: build-dependencies missing on this machine: #{missing.join(', ')} " \
                             "(relspec looked at the packages installed here, as dpkg-checkbuilddeps does; install " \
                             "them, or build with --backend sbuild), see #{request.log}"
         end
-        unmet.split(/,\s*/).flat_map { |relation| relation.split(/\s*\|\s*/) }
+        relations.flat_map { |relation| relation.split(/\s*\|\s*/) }
              .filter_map { |alt| local[alt[/\A[^\s(:]+/]] }.uniq
       end
 

@@ -43,3 +43,41 @@ RSpec.describe "relspec build --backend host" do
     expect(run.stderr).to eq("relspec: error: hb has no target trixie/amd64 (targets: bookworm/amd64)\n")
   end
 end
+
+# dpkg-checkbuilddeps lists the relations it misses separated by spaces:
+# every one that the run built must be laid over /opt, and only the others
+# are missing on this machine.
+RSpec.describe "relspec build --backend host with several build-dependencies of the release" do
+  before(:all) do
+    @dir = Dir.mktmpdir("relspec-build-host-several")
+    @release = BuildRelease.new(@dir, "hs")
+    @release.osdeps("absent:\n  debian: relspec-test-absent-package\n")
+    @release.package("base/a")
+    @release.package("base/b")
+    @release.package("base/both", dependencies: %w[base/a base/b])
+    @release.package("base/lacks", dependencies: %w[base/a base/b], osdeps: ["absent"])
+    @release.compile
+    @run = relspec("build", "specs/hs.yml", "--out", "out", "--backend", "host", "--keep-going", chdir: @dir)
+    @records = YAML.safe_load(File.read(File.join(@release.target_dir, "build-results.yml")))["packages"]
+  end
+
+  after(:all) { FileUtils.rm_rf(@dir) }
+
+  def log(package)
+    File.read(File.join(@release.target_dir, "logs", "#{@release.source(package)}.log"))
+  end
+
+  it "lays every build-dependency built in the run over /opt" do
+    expect(@records.fetch(@release.source("base/both"))["status"]).to eq("built"), log("base/both")
+    %w[base/a base/b].each do |dependency|
+      expect(log("base/both")).to match(%r{\$ dpkg-deb -x \S+/#{@release.source(dependency)}_\S+[.]deb })
+    end
+  end
+
+  it "names only the build-dependency this machine lacks" do
+    record = @records.fetch(@release.source("base/lacks"))
+    expect(record["status"]).to eq("failed")
+    expect(record["reason"]).to start_with("#{@release.source('base/lacks')}: build-dependencies missing on this " \
+                                           "machine: relspec-test-absent-package (relspec looked")
+  end
+end
