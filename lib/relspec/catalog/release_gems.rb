@@ -29,7 +29,7 @@ module Relspec
 
         archives = fetch_all(catalog, gems.except(*provided), fetch, locate)
         check_requirements(archives, locate)
-        check_constraints(catalog, archives, locate)
+        check_constraints(catalog, names, archives, locate)
         packages = archives.to_h { |name, archive| [name, package_of(archive, archives, catalog.codenames)] }
         provided.each { |name| packages[name] = provided_package(name, gems.fetch(name), catalog.codenames) }
         users = catalog.packages.transform_values { |package| with_gem_dependencies(package, packages.keys, catalog.codenames) }
@@ -83,10 +83,13 @@ module Relspec
 
       # An osdeps gem entry may carry a version constraint ("rice<4.0.0":
       # Rock's bindings need the Rice 3 API); a version of `gems:` outside it
-      # is what autoproj would never install for that package.
-      def check_constraints(catalog, archives, locate)
-        problems = catalog.packages.sort.flat_map do |name, package|
-          entries = catalog.codenames.flat_map { |codename| package.os_dependencies_for(codename).gems }.uniq
+      # is what autoproj would never install for that package. Only the
+      # selected packages count: the others are not in the release.
+      def check_constraints(catalog, names, archives, locate)
+        selected = names.flat_map { |codename, list| list.select { |name| catalog.package?(name) }.map { |name| [name, codename] } }
+        problems = selected.group_by(&:first).sort.flat_map do |name, pairs|
+          package = catalog.package(name)
+          entries = pairs.flat_map { |_, codename| package.os_dependencies_for(codename).gems }.uniq
           entries.filter_map do |entry|
             gem = Debian::Naming.gem_name(entry)
             requirement = requirement_of(entry, gem)
