@@ -28,7 +28,8 @@ module Relspec
     # no backtracking: a gem is chosen again when a later requirement
     # excludes its version, and versions that still do not fit together are
     # the `gem-requirement` error of ReleaseGems. A dependency cycle ends
-    # the walk at the first gem seen twice.
+    # the walk at the first gem seen twice; among gems the release packages
+    # it is an error (`gem-cycle`): each would build-depend on the other.
     class GemResolution
       # +automatic+: name => version of the gems packaged without `gems:`;
       # +requirements+: name => [Gem::Requirement] asked of each of them
@@ -74,8 +75,10 @@ module Relspec
         @archives = @archives.call if @archives.respond_to?(:call)
         @requests = requests
         @chosen = {}
+        @needs = {}
         @problems = []
         walk((requests.keys + @pinned.keys).uniq.sort)
+        check_cycles
         raise InvalidInput, @problems unless @problems.empty?
 
         automatic = @chosen.reject { |name, version| version == :system || @pinned.key?(name) }.sort.to_h
@@ -111,6 +114,7 @@ module Relspec
           archive = @pinned.key?(name) ? pinned(name) : automatic(name)
           next unless archive
 
+          @needs[name] = archive.runtime_dependencies.map(&:first)
           archive.runtime_dependencies.each do |dependency, requirement|
             add(@requests, dependency, requirement, "gem #{name} #{archive.version}")
             queue << dependency unless queue.include?(dependency)
@@ -192,6 +196,30 @@ module Relspec
         @fetch.call(name, version)
       rescue GemArchive::Problem => e
         @problems << Diagnostic.error("gem-source", e.message, location: @location, hint: "check gem_source and the version")
+        nil
+      end
+
+      # A cycle among the packaged gems, as one error: no order builds them.
+      def check_cycles
+        packaged = @chosen.reject { |_, version| version == :system }.keys
+        edges = packaged.to_h { |name| [name, (@needs[name] || []) & packaged] }
+        cycle = edges.keys.sort.lazy.filter_map { |name| cycle_from(name, edges, [name]) }.first
+        return unless cycle
+
+        @problems << Diagnostic.error("gem-cycle", "gems #{cycle.join(' → ')} need each other: no build order makes " \
+                                                   "their packages", location: @location,
+                                                   hint: "take one of them from the distribution (its archive), or " \
+                                                         "package them by hand")
+      end
+
+      def cycle_from(name, edges, path)
+        edges.fetch(name).sort.each do |next_name|
+          return path + [next_name] if next_name == path.first
+          next if path.include?(next_name)
+
+          found = cycle_from(next_name, edges, path + [next_name])
+          return found if found
+        end
         nil
       end
 

@@ -20,13 +20,16 @@ RSpec.describe "gem osdeps resolved against the distribution and gem_source" do
     builder.package("tools/app", type: :ruby, date: "2020-01-01T00:00:00Z", osdeps: ["foo"])
     builder.package("tools/old_app", type: :ruby, date: "2020-01-01T00:00:00Z", osdeps: ["foo_v1"])
     builder.package("tools/ancient_app", type: :ruby, date: "2020-01-01T00:00:00Z", osdeps: ["foo_ancient"])
-    builder.osdeps("foo:\n  gem: foo\nfoo_v1:\n  gem: foo<2.0\nfoo_ancient:\n  gem: foo<0.5\n")
+    builder.package("tools/loop_app", type: :ruby, date: "2020-01-01T00:00:00Z", osdeps: ["loopa"])
+    builder.osdeps("foo:\n  gem: foo\nfoo_v1:\n  gem: foo<2.0\nfoo_ancient:\n  gem: foo<0.5\nloopa:\n  gem: loopa\n")
     builder.create
     gems = File.join(@dir, "server", "gems")
     @foo_dependencies = { "bar" => ">= 1.0", "baz" => ">= 1.0" }
     %w[1.0.0 1.5.0].each { |version| GemBuilder.build(gems, "foo", version, dependencies: @foo_dependencies) }
     GemBuilder.build(gems, "foo", "2.0.0", dependencies: { "bar" => ">= 1.1", "baz" => ">= 1.0" })
     %w[1.0.0 1.1.0].each { |version| GemBuilder.build(gems, "bar", version) }
+    GemBuilder.build(gems, "loopa", "1.0.0", dependencies: { "loopb" => ">= 1.0" })
+    GemBuilder.build(gems, "loopb", "1.0.0", dependencies: { "loopa" => ">= 1.0" })
     GemBuilder.compact_index(File.join(@dir, "server"))
     @server = HttpServer.new(File.join(@dir, "server"))
     archive = AptRepositoryBuilder.new(File.join(@dir, "repos", "debian"), codenames: ["bookworm"], architectures: ["amd64"])
@@ -116,6 +119,14 @@ RSpec.describe "gem osdeps resolved against the distribution and gem_source" do
     expect(run.stderr).to include("error[gem-unresolvable]: no version of gem foo in #{@server.url}/info/<name> fits what " \
                                   "is asked: tools/ancient_app's osdep foo<0.5 (< 0.5); it has 2.0.0, 1.5.0, 1.0.0")
     expect(run.stderr.scan("error[").size).to eq(1)
+    expect(run.stderr).not_to include("Traceback", ".rb:")
+  end
+
+  it "ends on a dependency cycle, with one error: packages that build-depend on each other cannot be built" do
+    spec("loop", "select: [tools/loop_app]\n")
+    run = relspec("plan", "specs/loop.yml", chdir: @dir)
+    expect(run.exit_code).to eq(1)
+    expect(run.stderr).to include("error[gem-cycle]: gems loopa → loopb → loopa need each other")
     expect(run.stderr).not_to include("Traceback", ".rb:")
   end
 
