@@ -99,6 +99,19 @@ RSpec.describe "gem osdeps resolved against the distribution and gem_source" do
     expect(fresh["foo"]).to include("version" => "2.1.0-1~bookworm")
   end
 
+  it "refuses a packaged gem whose .gem changed under the version the lock recorded, on gem_source" do
+    folder = File.join(@dir, "changing-gems")
+    FileUtils.mkdir_p(folder)
+    FileUtils.cp(Dir.glob(File.join(@dir, "server", "gems", "{foo,bar}-*.gem")), folder)
+    path = spec("changing", "select: [tools/app]\n", source: "../changing-gems")
+    expect(relspec("plan", path, "--write", chdir: @dir).exit_code).to eq(0)
+    GemBuilder.build(folder, "foo", "2.0.0", dependencies: { "bar" => ">= 1.1", "baz" => ">= 1.0" }, date: "2021-03-03")
+    run = relspec("plan", "specs/changing.yml", chdir: @dir)
+    expect(run.exit_code).to eq(1)
+    expect(run.stderr).to include("specs/changing.yml:5:1: error[gem-changed]: gem foo 2.0.0 from " \
+                                  "../changing-gems/foo-2.0.0.gem is not the .gem the lock recorded")
+  end
+
   it "takes the version of gems: over the highest one" do
     plan, = decisions(spec("pinned", "select: [tools/app]\ngems: { foo: \"1.0.0\" }\n"))
     expect(plan["foo"]).to include("decision" => "build", "version" => "1.0.0-1~bookworm")
