@@ -126,7 +126,8 @@ module Relspec
         return nil if @chosen.key?(name)
 
         version = @pinned[name]
-        if !@blacklisted.call(name) && everywhere?(name) { |found| found == Gem::Version.new(version) }
+        # the same version as the planner sees it: 1.2 is not 1.2.0 there
+        if !@blacklisted.call(name) && everywhere?(name) { |found| found.to_s == version }
           @chosen[name] = :system
           return nil
         end

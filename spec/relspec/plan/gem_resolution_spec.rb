@@ -120,8 +120,11 @@ RSpec.describe "gem osdeps resolved against the distribution and gem_source" do
 
   it "takes a gems: entry the distribution has from it without its .gem" do
     before = @server.requests.size
-    plan, = decisions(spec("provided", "select: [tools/app]\ngems: { baz: \"1.2.0\" }\n"))
+    path = spec("provided", "select: [tools/app]\ngems: { baz: \"1.2.0\" }\n")
+    plan, = decisions(path)
     expect(plan["baz"]).to eq("decision" => "system", "deb" => "ruby-baz", "version" => "1.2.0-1")
+    # its lock entry (no .gem URL, no SHA256) reads back
+    2.times { expect(relspec("plan", path, "--write", chdir: @dir).exit_code).to eq(0) }
     expect(@server.requests.drop(before).grep(/baz/)).to eq([])
   end
 
