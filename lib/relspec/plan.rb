@@ -44,15 +44,22 @@ module Relspec
       lock_path = Lock.path(project_root(path), effective.release)
       previous = read_lock(lock_path, effective.release, discard_lock)
       gem_fetch = Catalog::ReleaseGems.fetcher(effective, File.dirname(resolution.spec_file.path), timeout: timeout)
-      release_catalog = Catalog::ReleaseCatalog.load(resolution, cache: catalog_cache, gem_fetch: gem_fetch)
       cache = Apt::Cache.new(cache_dir)
       fetcher_options = { timeout: timeout }
-      ancestors = Ancestors.of(resolution, fetcher_options: fetcher_options, cache: cache)
       targets = Target.all(effective)
+      gem_distribution = nil
+      gem_archives = lambda do
+        gem_distribution ||= read_distribution(resolution, /\Aruby-/, targets, fetcher_options, cache)
+        targets.to_h { |target| [target.to_s, gem_distribution.index(target)] }
+      end
+      release_catalog = Catalog::ReleaseCatalog.load(resolution, cache: catalog_cache, gem_fetch: gem_fetch, timeout: timeout,
+                                                                 gem_archives: gem_archives, locked_gems: locked_gems(previous))
+      ancestors = Ancestors.of(resolution, fetcher_options: fetcher_options, cache: cache)
       inventory = Inventory.read(ancestors, targets)
       own = read_own(resolution, targets, fetcher_options, cache)
       GemCheck.call(previous, release_catalog, resolution)
-      distribution = read_distribution(resolution, release_catalog, targets, fetcher_options, cache)
+      distribution = gem_distribution || read_distribution(resolution, wanted_of(release_catalog), targets, fetcher_options,
+                                                           cache)
       planner = Planner.new(release_catalog: release_catalog, effective: effective, spec_file: resolution.spec_file,
                             ancestors: ancestors, inventory: inventory, distribution: distribution)
       root = project_root(path)
@@ -88,10 +95,23 @@ module Relspec
       [plan.with_targets(targets), work]
     end
 
-    # The targets' own ruby-* packages for the gems of the release.
-    def self.read_distribution(resolution, release_catalog, targets, fetcher_options, cache)
+    # The gem versions the lock recorded (from the .gem's URL: the lock's
+    # version is the Debian form), kept while they fit.
+    def self.locked_gems(previous)
+      (previous&.packages || {}).filter_map do |name, record|
+        version = record["url"].to_s[%r{(?:\A|/)#{Regexp.escape(name)}-([^/]+)\.gem\z}, 1]
+        [name, version] if version
+      end.to_h
+    end
+
+    # The Debian names of the gems of the release and their dependencies.
+    def self.wanted_of(release_catalog)
       needed = release_catalog.gems.values.flat_map { |archive| archive.runtime_dependencies.map(&:first) }
-      wanted = (release_catalog.gems.keys + needed).uniq.map { |name| Debian::Naming.distribution_gem(name) }
+      (release_catalog.gems.keys + needed).uniq.map { |name| Debian::Naming.distribution_gem(name) }
+    end
+
+    # The targets' own ruby-* packages (+wanted+: names, or a Regexp).
+    def self.read_distribution(resolution, wanted, targets, fetcher_options, cache)
       effective = resolution.effective
       origin = effective.origin("distributions")
       location = origin&.location || resolution.spec_file.location(["release"])
@@ -113,6 +133,6 @@ module Relspec
       raise InvalidInput, [Diagnostic.error("own-repository", "the repository of #{resolution.effective.release}: #{e.message}",
                                             location: spec_file.key_location(["repository"]))]
     end
-    private_class_method :read_own, :read_distribution, :read_lock, :settle
+    private_class_method :read_own, :read_distribution, :locked_gems, :wanted_of, :read_lock, :settle
   end
 end

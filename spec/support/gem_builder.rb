@@ -39,6 +39,24 @@ module GemBuilder
     File.join(dir, "#{name}-#{version}.gem")
   end
 
+  # Writes the compact index rubygems.org serves to Bundler,
+  # <root>/info/<name> (one line per version: "1.0.0 dep:>= 1|checksum:…"),
+  # for every .gem in <root>/gems, so a test server lists versions as
+  # rubygems.org does. Returns the names indexed.
+  def compact_index(root)
+    require "digest"
+    require "rubygems/package"
+    gems = Dir.glob(File.join(root, "gems", "*.gem")).sort.map { |path| [Gem::Package.new(path).spec, path] }
+    FileUtils.mkdir_p(File.join(root, "info"))
+    gems.group_by { |spec, _| spec.name }.each do |name, entries|
+      lines = entries.sort_by { |spec, _| spec.version }.map do |spec, path|
+        dependencies = spec.runtime_dependencies.map { |dependency| "#{dependency.name}:#{dependency.requirement}" }.join(",")
+        "#{spec.version} #{dependencies}|checksum:#{Digest::SHA256.file(path).hexdigest}\n"
+      end
+      File.write(File.join(root, "info", name), "---\n#{lines.join}")
+    end.keys
+  end
+
   def gemspec(name, version, files, dependencies, executable, extension)
     lines = [
       "s.name = #{name.inspect}", "s.version = #{version.inspect}", "s.summary = \"Stand-in #{name} gem\"",

@@ -68,6 +68,10 @@ module Relspec
       def size
         entries.size
       end
+
+      def names
+        entries.keys
+      end
     end
   end
 end

@@ -6,7 +6,9 @@ require_relative "pinned_manifests"
 require_relative "selection"
 require_relative "metapackages"
 require_relative "release_gems"
+require_relative "gem_resolution"
 require_relative "../display_path"
+require_relative "../spec/package_pattern"
 
 module Relspec
   class Catalog
@@ -14,9 +16,10 @@ module Relspec
     # target distributions, its pins applied, the metapackages it selects by
     # name added as packages, the gems of `gems:` added as packages, and the
     # names of the selected packages (with dependencies) for each target
-    # codename. +gems+: gem name => GemArchive.
+    # codename. +gems+: gem name => GemArchive; +gem_resolution+: the
+    # GemResolution::Result (gems packaged without `gems:`).
     class ReleaseCatalog
-      attr_reader :catalog, :selections, :workspace, :gems
+      attr_reader :catalog, :selections, :workspace, :gems, :gem_resolution
 
       # The selected names on one codename, with their packages, and the
       # selected packages that cannot exist there (name => Selection::Unavailable).
@@ -28,8 +31,13 @@ module Relspec
 
       # +resolution+: a valid Spec::Resolution; +cache+: a Catalog::Cache
       # for catalogs read from workspaces, or nil; +gem_fetch+: (name,
-      # version) → GemArchive (default: from the spec's gem_source). Raises InvalidInput.
-      def self.load(resolution, cache: nil, gem_fetch: nil)
+      # version) → GemArchive (default: from the spec's gem_source);
+      # +gem_archives+: a callable giving target name => {ruby-* name =>
+      # version} (nil for a target without an archive), called only when the
+      # release has gems to resolve; without it (catalog show) only `gems:`
+      # are packaged. +locked_gems+: name => the version the lock recorded.
+      # Raises InvalidInput.
+      def self.load(resolution, cache: nil, gem_fetch: nil, gem_archives: nil, locked_gems: {}, timeout: 10)
         spec_file = resolution.spec_file
         effective = resolution.effective
         workspace = workspace_path(spec_file, effective)
@@ -44,8 +52,10 @@ module Relspec
                                               locate: ->(name) { effective.pin_origin(name)&.location })
         selections = select_all(pinned, effective, spec_file, workspace)
         catalog, names = Metapackages.add(pinned, effective["select"], selections)
-        catalog, names, gems = add_gems(catalog, names, resolution, gem_fetch)
-        new(catalog, names, selections.transform_values(&:unavailable), workspace, gems)
+        gem_fetch ||= ReleaseGems.fetcher(effective, File.dirname(resolution.spec_file.path), timeout: timeout)
+        resolved = resolve_gems(catalog, names, resolution, gem_fetch, gem_archives, locked_gems, timeout)
+        catalog, names, gems = add_gems(catalog, names, resolution, gem_fetch, resolved)
+        new(catalog, names, selections.transform_values(&:unavailable), workspace, gems, resolved)
       end
 
       def self.workspace_path(spec_file, effective)
@@ -76,18 +86,33 @@ module Relspec
         selections
       end
 
-      def self.add_gems(catalog, names, resolution, fetch)
+      def self.resolve_gems(catalog, names, resolution, fetch, archives, locked, timeout)
+        return GemResolution::NONE unless archives
+
         effective = resolution.effective
-        fetch ||= ReleaseGems.fetcher(effective, File.dirname(resolution.spec_file.path))
-        locate = ->(name) { effective.entry_location("gems", name) }
-        ReleaseGems.add(catalog, effective["gems"] || {}, names, fetch: fetch, locate: locate)
+        spec_dir = File.dirname(resolution.spec_file.path)
+        blacklist = (effective["blacklist"] || []).map { |entry| Spec::PackagePattern.parse(entry["match"]) }
+        selected = names.to_h { |codename, list| [codename, list.select { |name| catalog.package?(name) }] }
+        GemResolution.new(catalog: catalog, selected: selected, pinned: effective["gems"] || {}, archives: archives,
+                          locked: locked, versions: GemVersions.new(effective["gem_source"], base_dir: spec_dir, timeout: timeout),
+                          fetch: fetch, blacklisted: ->(name) { blacklist.any? { |pattern| pattern.match?(name) } },
+                          location: effective.origin("gem_source")&.location || resolution.spec_file.location(["release"]))
+                     .call
       end
 
-      private_class_method :workspace_path, :select_all, :add_gems
+      def self.add_gems(catalog, names, resolution, fetch, resolved)
+        effective = resolution.effective
+        locate = ->(name) { effective.entry_location("gems", name) }
+        gems = (effective["gems"] || {}).merge(resolved.automatic)
+        ReleaseGems.add(catalog, gems, names, fetch: fetch, locate: locate, provided: resolved.provided)
+      end
 
-      def initialize(catalog, names, unavailable, workspace, gems)
+      private_class_method :workspace_path, :select_all, :resolve_gems, :add_gems
+
+      def initialize(catalog, names, unavailable, workspace, gems, gem_resolution = GemResolution::NONE)
         @catalog = catalog
         @gems = gems.freeze
+        @gem_resolution = gem_resolution
         @selections = names.to_h { |codename, list| [codename, Selected.new(list, catalog, unavailable.fetch(codename)).freeze] }.freeze
         @workspace = workspace
         freeze

@@ -20,19 +20,30 @@ module Relspec
 
       # +gems+: name => version; +fetch+: (name, version) → GemArchive;
       # +locate+: name → Location of its `gems:` entry; +names+: codename =>
-      # selected names. Returns [catalog, names] with the gems added.
-      # Raises InvalidInput.
-      def add(catalog, gems, names, fetch:, locate:)
+      # selected names; +provided+: the names of +gems+ every target's
+      # distribution has at that version, added without their .gem (nothing
+      # is built from it). Returns [catalog, names, archives] with the gems
+      # added. Raises InvalidInput.
+      def add(catalog, gems, names, fetch:, locate:, provided: [])
         return [catalog, names, {}] if gems.empty?
 
-        archives = fetch_all(catalog, gems, fetch, locate)
+        archives = fetch_all(catalog, gems.except(*provided), fetch, locate)
         check_requirements(archives, locate)
-        check_constraints(catalog, archives, locate)
+        check_constraints(catalog, names, archives, locate)
         packages = archives.to_h { |name, archive| [name, package_of(archive, archives, catalog.codenames)] }
-        users = catalog.packages.transform_values { |package| with_gem_dependencies(package, archives.keys, catalog.codenames) }
+        provided.each { |name| packages[name] = provided_package(name, gems.fetch(name), catalog.codenames) }
+        users = catalog.packages.transform_values { |package| with_gem_dependencies(package, packages.keys, catalog.codenames) }
         extended = Catalog.new(packages: users.merge(packages), metapackages: catalog.metapackages, layout: catalog.layout,
                                excluded: catalog.excluded, ignored: catalog.ignored, codenames: catalog.codenames)
-        [extended, names.transform_values { |list| (list + archives.keys).uniq.sort.freeze }, archives]
+        [extended, names.transform_values { |list| (list + packages.keys).uniq.sort.freeze }, archives]
+      end
+
+      # A gem the distribution provides on every target: the plan takes
+      # ruby-<gem>, so what the .gem holds (files, dependencies) is never read.
+      def provided_package(name, version, codenames)
+        Package.new(name: name, package_set: nil, build_type: "gem", vcs: Vcs.new(type: "gem", url: nil, commit: nil).freeze,
+                    commit_time: nil, source_dir: nil, version: version, dependencies: [],
+                    os_dependencies: codenames.to_h { |codename| [codename, OsDependencies::EMPTY] })
       end
 
       def fetch_all(catalog, gems, fetch, locate)
@@ -72,10 +83,13 @@ module Relspec
 
       # An osdeps gem entry may carry a version constraint ("rice<4.0.0":
       # Rock's bindings need the Rice 3 API); a version of `gems:` outside it
-      # is what autoproj would never install for that package.
-      def check_constraints(catalog, archives, locate)
-        problems = catalog.packages.sort.flat_map do |name, package|
-          entries = catalog.codenames.flat_map { |codename| package.os_dependencies_for(codename).gems }.uniq
+      # is what autoproj would never install for that package. Only the
+      # selected packages count: the others are not in the release.
+      def check_constraints(catalog, names, archives, locate)
+        selected = names.flat_map { |codename, list| list.select { |name| catalog.package?(name) }.map { |name| [name, codename] } }
+        problems = selected.group_by(&:first).sort.flat_map do |name, pairs|
+          package = catalog.package(name)
+          entries = pairs.flat_map { |_, codename| package.os_dependencies_for(codename).gems }.uniq
           entries.filter_map do |entry|
             gem = Debian::Naming.gem_name(entry)
             requirement = requirement_of(entry, gem)
@@ -120,11 +134,12 @@ module Relspec
       end
 
       # Fetches from the effective spec's gem_source, downloads cached in
-      # the XDG cache.
+      # the XDG cache; each .gem is read once per run.
       def fetcher(effective, spec_dir, timeout: 10, cache_dir: CacheDir.for("gems"))
+        read = {}
         lambda do |name, version|
-          GemArchive.fetch(name, version, source: effective["gem_source"], base_dir: spec_dir, cache_dir: cache_dir,
-                                          timeout: timeout)
+          read[[name, version]] ||= GemArchive.fetch(name, version, source: effective["gem_source"], base_dir: spec_dir,
+                                                                    cache_dir: cache_dir, timeout: timeout)
         end
       end
     end

@@ -13,12 +13,12 @@ module Relspec
     # the plan asks about: a gem of the release is taken from the
     # distribution when it has the gem as ruby-<name> at the same version.
     class DistributionPackages
-      # +wanted+: Debian names to look up; +spec_dir+: the folder relative
+      # +wanted+: Debian names to look up (or a Regexp they match); +spec_dir+: the folder relative
       # archive paths start from; +location+: where the archives are declared.
       # Targets without an archive get no entries. Raises InvalidInput when
       # an archive cannot be read.
       def self.read(distributions, targets, wanted, spec_dir:, location:, fetcher_options: {}, cache: Apt::Cache.new(nil))
-        return new({}, []) if wanted.empty?
+        return new({}, []) if wanted.is_a?(Array) && wanted.empty?
 
         found = {}
         problems = []
@@ -45,7 +45,8 @@ module Relspec
       def self.versions(repository, archive, target, wanted)
         (archive["components"] || ["main"]).each_with_object({}) do |component, out|
           index = repository.packages(target.codename, target.arch, component: component)
-          wanted.each do |name|
+          names = wanted.is_a?(Regexp) ? index.names.grep(wanted) : wanted
+          names.each do |name|
             entry = index[name]
             next unless entry && (out[name].nil? || Apt::Version.parse(entry.version) > Apt::Version.parse(out[name]))
 
@@ -68,6 +69,12 @@ module Relspec
 
       def version_of(name, target)
         @found.dig(target, name)
+      end
+
+      # name => version of what was looked up in the target's archive, nil
+      # when it was not read.
+      def index(target)
+        @found[target]
       end
 
       # Whether the target's archive was read (so a name it lacks is known missing).

@@ -24,12 +24,18 @@ module Relspec
 
           Diagnostic.error("gem-changed", "gem #{name} #{archive.version} from #{archive.origin} is not the .gem the lock " \
                                           "recorded (SHA256 #{before['commit'][0, 12]}… then, #{archive.sha256[0, 12]}… now)",
-                           location: resolution.effective.entry_location("gems", name) ||
-                                     resolution.spec_file.location(["gems"]),
+                           location: location_of(name, resolution),
                            hint: "a repository cannot take a different orig tarball under the same version: restore " \
                                  "the recorded .gem, or package another version")
         end
         raise InvalidInput, problems unless problems.empty?
+      end
+
+      # The gem's `gems:` entry; for a gem packaged without one, gem_source.
+      def location_of(name, resolution)
+        effective = resolution.effective
+        effective.entry_location("gems", name) || effective.origin("gem_source")&.location ||
+          resolution.spec_file.location(["gems"])
       end
     end
   end

@@ -4,6 +4,7 @@ require_relative "cause"
 require_relative "decision"
 require_relative "release_plan"
 require_relative "distribution_packages"
+require_relative "../catalog/gem_resolution"
 require_relative "../apt/version"
 require_relative "../debian/naming"
 require_relative "../debian/package_version"
@@ -40,8 +41,9 @@ module Relspec
         @ancestors = ancestors
         @inventory = inventory
         @distribution = distribution
+        @gem_requirements = release_catalog.gem_resolution.requirements
         @warnings = []
-        @notes = []
+        @notes = release_catalog.gem_resolution.notes.dup
       end
 
       def plan
@@ -70,7 +72,8 @@ module Relspec
       end
 
       # A gem of the release that the target distribution has at the same
-      # version is taken from it (unless the spec blacklists the gem).
+      # version (a gem packaged without `gems:`: at a version all its
+      # requirements accept) is taken from it (unless the spec blacklists the gem).
       def from_distribution(package, target, cause)
         return nil unless package.build_type == "gem" && cause&.kind != :blacklisted
 
@@ -82,12 +85,20 @@ module Relspec
           return nil
         end
 
-        if Apt::Version.parse(version).upstream.sub(/[+~](dfsg|ds|repack).*\z/, "") == upstream(package)
+        if distribution_fits?(package, version)
           return Decision.new(package: package.name, kind: :system, deb_name: name, version: version).freeze
         end
 
         @notes << "#{target.codename} has #{name} #{version}, the release packages gem #{package.name} #{package.version}"
         nil
+      end
+
+      def distribution_fits?(package, version)
+        requirements = @gem_requirements[package.name]
+        return Apt::Version.parse(version).upstream.sub(/[+~](dfsg|ds|repack).*\z/, "") == upstream(package) unless requirements
+
+        found = Catalog::GemResolution.gem_version_of(version)
+        !found.nil? && requirements.all? { |requirement| requirement.satisfied_by?(found) }
       end
 
       # name => Cause for the selected packages the target cannot have.

@@ -33,9 +33,13 @@ RSpec.describe "a release of real Rock packages" do
       workspace: ../ws/workspace
       targets: { bookworm: [amd64] }
       maintainer: Rock Packaging <rock-dev@example.org>
-      # utilrb needs facets/kernel/constant: facets 4 dropped it; Rock's
-      # osdeps ask for rice<4.0.0
-      gems: { facets: "3.1.0", rice: "3.0.0" }
+      # this machine's apt lists stand for bookworm's archive: it has no
+      # ruby-rice, so rice is packaged without a gems: entry, at the highest
+      # version of ../gems that fits Rock's osdeps (rice<4.0.0)
+      distributions: { bookworm: { archive: { host: true } } }
+      # utilrb needs facets/kernel/constant: facets 4 dropped it, and Rock's
+      # osdeps do not constrain facets, so it stays pinned
+      gems: { facets: "3.1.0" }
       gem_source: ../gems
     YAML
     @compile = relspec("compile", "specs/rock.yml", "--out", "out", chdir: @dir)
@@ -74,6 +78,12 @@ RSpec.describe "a release of real Rock packages" do
 
   def prefix(source)
     "/opt/rock/rock/#{source}"
+  end
+
+  it "packages rice automatically at the version Rock's osdeps accept, and records it in the lock" do
+    lock = YAML.safe_load(File.read(File.join(@dir, "releases", "rock", "lock.yml")))
+    expect(lock.dig("packages", "rice")).to include("url" => "../gems/rice-3.0.0.gem", "version" => "3.0.0")
+    expect(lock.dig("targets", "bookworm/amd64", "rice")).to include("decision" => "build")
   end
 
   it "compiles every package of the layout, and facets as a gem of the release" do

@@ -1,0 +1,237 @@
+# frozen_string_literal: true
+
+require_relative "gem_archive"
+require_relative "gem_versions"
+require_relative "../apt/version"
+require_relative "../debian/naming"
+require_relative "../diagnostic"
+require_relative "../error"
+
+module Relspec
+  class Catalog
+    # Which gems the release packages without being told (DESIGN: "all
+    # external Ruby gems that are required by a package … automatically
+    # become part of the generated binary release"). A gem osdep of a
+    # selected package, and a runtime dependency of a gem the release
+    # packages, is:
+    #
+    # - the distribution's ruby-<gem> when every target whose archive was
+    #   read has it at a version all the requirements on it accept;
+    # - otherwise packaged here, at the version the lock recorded while it
+    #   still fits (as Bundler keeps a Gemfile.lock), else the highest one
+    #   of gem_source that fits; its own runtime dependencies are resolved
+    #   the same way.
+    #
+    # `gems:` pins a version and is never second-guessed. Targets without
+    # an archive are not checked (one note): their gem osdeps stay ruby-<gem>
+    # unless another target makes the gem a package. Choices are greedy, with
+    # no backtracking: a gem is chosen again when a later requirement
+    # excludes its version, and versions that still do not fit together are
+    # the `gem-requirement` error of ReleaseGems. A dependency cycle ends
+    # the walk at the first gem seen twice; among gems the release packages
+    # it is an error (`gem-cycle`): each would build-depend on the other.
+    class GemResolution
+      # +automatic+: name => version of the gems packaged without `gems:`;
+      # +requirements+: name => [Gem::Requirement] asked of each of them
+      # (the planner takes the distribution's package on a target whose
+      # version fits them all); +provided+: `gems:` entries every target's
+      # distribution has at that version (their .gem is never fetched).
+      Result = Struct.new(:automatic, :requirements, :provided, :notes, keyword_init: true)
+
+      NONE = Result.new(automatic: {}, requirements: {}, provided: [], notes: []).freeze
+
+      # The upstream version of a distribution's ruby-* package as a gem
+      # version (1.2.0+dfsg-1 → 1.2.0, 1.0.0~pre-1 → 1.0.0.pre), or nil.
+      def self.gem_version_of(deb_version)
+        text = Apt::Version.parse(deb_version).upstream.sub(/[+~](dfsg|ds|repack).*\z/, "").tr("~", ".")
+        Gem::Version.correct?(text) ? Gem::Version.new(text) : nil
+      end
+
+      # +selected+: codename => the selected package names of +catalog+;
+      # +pinned+: `gems:`; +archives+: target name => {ruby-* name =>
+      # version}, nil for a target whose archive was not read (or a callable
+      # giving that); +locked+: name
+      # => the version the lock recorded; +versions+: GemVersions; +fetch+:
+      # (name, version) → GemArchive; +blacklisted+: name → bool;
+      # +location+: where gem_source is set (for errors).
+      def initialize(catalog:, selected:, pinned:, archives:, locked:, versions:, fetch:, blacklisted:, location:)
+        @catalog = catalog
+        @selected = selected
+        @pinned = pinned
+        @archives = archives
+        @locked = locked
+        @versions = versions
+        @fetch = fetch
+        @blacklisted = blacklisted
+        @location = location
+      end
+
+      # Raises InvalidInput when a gem has no version that fits.
+      def call
+        requests = osdep_requests
+        return NONE if requests.empty? && @pinned.empty?
+
+        # read only now: a release without gems never reads its distribution's archive
+        @archives = @archives.call if @archives.respond_to?(:call)
+        @requests = requests
+        @chosen = {}
+        @needs = {}
+        @problems = []
+        walk((requests.keys + @pinned.keys).uniq.sort)
+        check_cycles
+        raise InvalidInput, @problems unless @problems.empty?
+
+        automatic = @chosen.reject { |name, version| version == :system || @pinned.key?(name) }.sort.to_h
+        Result.new(automatic: automatic, requirements: automatic.to_h { |name, _| [name, @requests[name].map(&:first)] },
+                   provided: @pinned.keys.select { |name| @chosen[name] == :system }.sort, notes: notes).freeze
+      end
+
+      private
+
+      # gem name => [[Gem::Requirement, who asks]] from the selected packages' osdeps.
+      def osdep_requests
+        requests = Hash.new { |hash, key| hash[key] = [] }
+        @selected.sort.each do |codename, names|
+          names.each do |name|
+            @catalog.package(name).os_dependencies_for(codename).gems.each do |entry|
+              gem = Debian::Naming.gem_name(entry)
+              requirement = ReleaseGems.requirement_of(entry, gem) || Gem::Requirement.default
+              add(requests, gem, requirement, "#{name}'s osdep #{entry}")
+            end
+          end
+        end
+        requests
+      end
+
+      def add(requests, gem, requirement, who)
+        requests[gem] << [requirement, who] unless requests[gem].any? { |known, by| known == requirement && by == who }
+      end
+
+      def walk(queue)
+        while (name = queue.shift)
+          next if @catalog.package?(name) # a workspace package of that name: ReleaseGems says so for gems:
+
+          archive = @pinned.key?(name) ? pinned(name) : automatic(name)
+          next unless archive
+
+          @needs[name] = archive.runtime_dependencies.map(&:first)
+          archive.runtime_dependencies.each do |dependency, requirement|
+            add(@requests, dependency, requirement, "gem #{name} #{archive.version}")
+            queue << dependency unless queue.include?(dependency)
+          end
+        end
+      end
+
+      def pinned(name)
+        return nil if @chosen.key?(name)
+
+        version = @pinned[name]
+        # the same version as the planner sees it: 1.2 is not 1.2.0 there
+        if !@blacklisted.call(name) && everywhere?(name) { |found| found.to_s == version }
+          @chosen[name] = :system
+          return nil
+        end
+        @chosen[name] = version
+        # a .gem that cannot be had is ReleaseGems' error, on its `gems:` entry
+        @fetch.call(name, version)
+      rescue GemArchive::Problem
+        nil
+      end
+
+      # The gem chosen (again) for what is asked of it now, nil when the
+      # distribution provides it or the earlier choice still fits.
+      def automatic(name)
+        requirements = @requests[name].map(&:first)
+        fits = ->(version) { requirements.all? { |requirement| requirement.satisfied_by?(version) } }
+        current = @chosen[name]
+        return nil if current == :system && everywhere?(name, &fits)
+        return nil if current && current != :system && fits.call(Gem::Version.new(current))
+
+        if @archives.values.none? || (current.nil? && everywhere?(name, &fits))
+          @chosen[name] = :system
+          return nil
+        end
+        version = choose(name, fits)
+        return nil unless version
+
+        @chosen[name] = version
+        fetch(name, version)
+      end
+
+      # Whether every target's archive was read and has ruby-<name> at a
+      # version the block accepts.
+      def everywhere?(name)
+        return false if @archives.empty?
+
+        deb = Debian::Naming.distribution_gem(name)
+        @archives.values.all? do |found|
+          version = found&.[](deb)&.then { |text| self.class.gem_version_of(text) }
+          version && yield(version)
+        end
+      end
+
+      def choose(name, fits)
+        locked = @locked[name]
+        return locked if locked && Gem::Version.correct?(locked) && fits.call(Gem::Version.new(locked))
+
+        listed = @versions.of(name)
+        found = listed.find(&fits)
+        return found.to_s if found
+
+        @problems << unresolvable(name, listed)
+        nil
+      rescue GemVersions::Problem => e
+        @problems << Diagnostic.error("gem-source", e.message, location: @location, hint: "check gem_source")
+        nil
+      end
+
+      def unresolvable(name, listed)
+        asked = @requests[name].map { |requirement, who| "#{who} (#{requirement})" }.join(", ")
+        there = listed.empty? ? "it has none" : "it has #{listed.first(5).join(', ')}#{listed.size > 5 ? ', …' : ''}"
+        Diagnostic.error("gem-unresolvable", "no version of gem #{name} in #{@versions.where} fits what is asked: " \
+                                             "#{asked}; #{there}",
+                         location: @location, hint: "add a fitting #{name} to gem_source, or pin one with gems:")
+      end
+
+      def fetch(name, version)
+        @fetch.call(name, version)
+      rescue GemArchive::Problem => e
+        @problems << Diagnostic.error("gem-source", e.message, location: @location, hint: "check gem_source and the version")
+        nil
+      end
+
+      # A cycle among the packaged gems, as one error: no order builds them.
+      def check_cycles
+        packaged = @chosen.reject { |_, version| version == :system }.keys
+        edges = packaged.to_h { |name| [name, (@needs[name] || []) & packaged] }
+        cycle = edges.keys.sort.lazy.filter_map { |name| cycle_from(name, edges, [name]) }.first
+        return unless cycle
+
+        @problems << Diagnostic.error("gem-cycle", "gems #{cycle.join(' → ')} need each other: no build order makes " \
+                                                   "their packages", location: @location,
+                                                   hint: "take one of them from the distribution (its archive), or " \
+                                                         "package them by hand")
+      end
+
+      def cycle_from(name, edges, path)
+        edges.fetch(name).sort.each do |next_name|
+          return path + [next_name] if next_name == path.first
+          next if path.include?(next_name)
+
+          found = cycle_from(next_name, edges, path + [next_name])
+          return found if found
+        end
+        nil
+      end
+
+      def notes
+        unchecked = @archives.select { |_, found| found.nil? }.keys.sort
+        asked = @requests.keys - @pinned.keys - @chosen.select { |_, version| version != :system }.keys
+        return [] if unchecked.empty? || asked.empty?
+
+        ["gem osdeps are not checked on #{unchecked.join(', ')} (no distribution archive: " \
+         "distributions.<codename>.archive): #{asked.sort.join(', ')} taken as ruby-<gem> there"]
+      end
+    end
+  end
+end

@@ -1,0 +1,77 @@
+# frozen_string_literal: true
+
+require_relative "../apt/fetcher"
+require_relative "../error"
+
+module Relspec
+  class Catalog
+    # The released versions of a gem in a spec's gem_source, to pick one
+    # from when a gem osdep is packaged without a `gems:` entry:
+    #
+    # - a folder: the names of its <name>-<version>.gem files;
+    # - a RubyGems-style server: its compact index, `<url>/info/<name>`
+    #   (what rubygems.org serves to Bundler: one line per version,
+    #   "1.2.0 dep:>= 1|checksum:…", and "1.2.0-java …" for platform gems).
+    #
+    # Platform gems and prereleases are left out: the package is made from
+    # the plain gem, and a prerelease is only taken when `gems:` names it.
+    class GemVersions
+      # Raised when the listing cannot be read; the message names its URL.
+      class Problem < Relspec::Error; end
+
+      # A compact index of a gem with a very long history (aws-sdk-core) is
+      # a few hundred kB; what is larger is not one.
+      MAX_BYTES = 8 * 1024 * 1024
+
+      # +source+: gem_source as written; +base_dir+: where a relative
+      # folder starts.
+      def initialize(source, base_dir:, timeout: 10)
+        @source = source.chomp("/")
+        @base_dir = base_dir
+        @fetcher = Apt::Fetcher.new(@source, timeout: timeout)
+        @listed = {}
+      end
+
+      def where
+        @fetcher.remote? ? "#{@source}/info/<name>" : @source
+      end
+
+      # Gem::Versions of +name+, highest first; [] when the source has none.
+      # Each name is listed once per run.
+      def of(name)
+        @listed[name] ||= (@fetcher.remote? ? from_index(name) : from_folder(name)).uniq.sort.reverse.freeze
+      end
+
+      private
+
+      def from_folder(name)
+        folder = File.expand_path(@source.delete_prefix("file://"), @base_dir)
+        pattern = /\A#{Regexp.escape(name)}-([0-9][^-]*)\.gem\z/
+        Dir.children(folder).filter_map { |file| release(file[pattern, 1]) }
+      rescue Errno::ENOENT, Errno::ENOTDIR
+        raise Problem, "gem_source #{@source} is not a folder"
+      end
+
+      def from_index(name)
+        text = @fetcher.fetch("info/#{name}", max_bytes: MAX_BYTES)
+        return [] unless text
+
+        text.force_encoding(Encoding::UTF_8).each_line.filter_map do |line|
+          next if line.start_with?("---")
+
+          release(line.split(" ", 2).first)
+        end
+      rescue Apt::Fetcher::Failure => e
+        raise Problem, "cannot list the versions of gem #{name}: #{e.message}"
+      end
+
+      # A plain release version, or nil (platform, prerelease, not a version).
+      def release(text)
+        return nil unless text && !text.include?("-") && Gem::Version.correct?(text)
+
+        version = Gem::Version.new(text)
+        version.prerelease? ? nil : version
+      end
+    end
+  end
+end

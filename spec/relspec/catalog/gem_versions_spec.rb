@@ -1,0 +1,60 @@
+# frozen_string_literal: true
+
+require "spec_helper"
+require "webrick"
+require "relspec/catalog/gem_versions"
+
+# Listing a gem's versions from gem_source: a folder of .gem files, or a
+# real WEBrick server answering the compact index (/info/<name>) as
+# rubygems.org does, including servers that never stop sending.
+RSpec.describe Relspec::Catalog::GemVersions do
+  before(:all) do
+    @server = WEBrick::HTTPServer.new(BindAddress: "127.0.0.1", Port: 0, Logger: WEBrick::Log.new(File::NULL), AccessLog: [])
+    @server.mount_proc("/info/foo") do |_, response|
+      # as rubygems.org writes it: platform gems and prereleases among the releases
+      response.body = "---\n1.0.0 bar:>= 1.0|checksum:aa\n1.10.0 |checksum:bb\n1.10.0-java |checksum:cc\n" \
+                      "2.0.0.rc1 |checksum:dd\n1.9.1 |checksum:ee,ruby:>= 2.5\n"
+    end
+    @server.mount_proc("/info/endless") { |_, response| StreamedBody.attach(response, "9.9.9 |checksum:ff\n" * 4096, 0) }
+    @server.mount_proc("/info/drip") { |_, response| StreamedBody.attach(response, "1", 0.05) }
+    @thread = Thread.new { @server.start }
+    @url = "http://127.0.0.1:#{@server.config[:Port]}"
+  end
+
+  after(:all) do
+    @server.shutdown
+    @thread.join(5)
+  end
+
+  it "reads the compact index: releases only, highest first" do
+    expect(described_class.new(@url, base_dir: "/").of("foo").map(&:to_s)).to eq(%w[1.10.0 1.9.1 1.0.0])
+  end
+
+  it "has no versions of a gem the server does not know" do
+    expect(described_class.new(@url, base_dir: "/").of("nothing")).to eq([])
+  end
+
+  it "stops an endless index at its size cap" do
+    stub_const("#{described_class}::MAX_BYTES", 1024 * 1024)
+    expect { described_class.new(@url, base_dir: "/").of("endless") }
+      .to raise_error(described_class::Problem, /cannot list the versions of gem endless: .*more than 1048576 bytes/)
+  end
+
+  it "stops a dripping index at the download deadline" do
+    started = Process.clock_gettime(Process::CLOCK_MONOTONIC)
+    expect { described_class.new(@url, base_dir: "/", timeout: 0.2).of("drip") }
+      .to raise_error(described_class::Problem, /cannot list the versions of gem drip: /)
+    expect(Process.clock_gettime(Process::CLOCK_MONOTONIC) - started).to be < 10
+  end
+
+  it "lists a folder's .gem files of that name, not of a longer one" do
+    Dir.mktmpdir("relspec-gem-folder") do |dir|
+      %w[foo-1.0.0.gem foo-2.0.0.gem foo-bar-3.0.0.gem foo-2.1.0-x86_64-linux.gem foo-3.0.0.pre.gem notes.txt]
+        .each { |file| File.write(File.join(dir, file), "") }
+      expect(described_class.new(File.basename(dir), base_dir: File.dirname(dir)).of("foo").map(&:to_s))
+        .to eq(%w[2.0.0 1.0.0])
+      expect { described_class.new("absent", base_dir: dir).of("foo") }
+        .to raise_error(described_class::Problem, "gem_source absent is not a folder")
+    end
+  end
+end
