@@ -80,31 +80,35 @@ RSpec.describe "gem osdeps resolved against the distribution and gem_source" do
     expect(plan["bar"]).to include("decision" => "build", "version" => "1.1.0-1~bookworm")
   end
 
-  it "records the versions in the lock and keeps them while they fit, though gem_source has a newer one" do
-    folder = File.join(@dir, "folder-gems")
+  # A release +name+ of tools/app whose gem_source is a folder holding the
+  # server's gems matching +pattern+, planned with its lock written.
+  # Returns [folder, spec path].
+  def planned_from_folder(name, pattern)
+    folder = File.join(@dir, "#{name}-gems")
     FileUtils.mkdir_p(folder)
-    FileUtils.cp(Dir.glob(File.join(@dir, "server", "gems", "*.gem")), folder)
-    path = spec("stable", "select: [tools/app]\n", source: "../folder-gems")
+    FileUtils.cp(Dir.glob(File.join(@dir, "server", "gems", pattern)), folder)
+    path = spec(name, "select: [tools/app]\n", source: "../#{name}-gems")
     run = relspec("plan", path, "--write", chdir: @dir)
     expect(run.exit_code).to eq(0), run.stderr
+    [folder, path]
+  end
+
+  it "records the versions in the lock and keeps them while they fit, though gem_source has a newer one" do
+    folder, path = planned_from_folder("stable", "*.gem")
     lock = YAML.safe_load(File.read(File.join(@dir, "releases", "stable", "lock.yml")))
-    expect(lock.dig("packages", "foo")).to include("url" => "../folder-gems/foo-2.0.0.gem", "version" => "2.0.0")
-    expect(lock.dig("packages", "bar")).to include("url" => "../folder-gems/bar-1.1.0.gem", "version" => "1.1.0")
+    expect(lock.dig("packages", "foo")).to include("url" => "../stable-gems/foo-2.0.0.gem", "version" => "2.0.0")
+    expect(lock.dig("packages", "bar")).to include("url" => "../stable-gems/bar-1.1.0.gem", "version" => "1.1.0")
 
     GemBuilder.build(folder, "foo", "2.1.0", dependencies: @foo_dependencies)
     plan, = decisions(path)
     expect(plan["foo"]).to include("version" => "2.0.0-1~bookworm")
     # without the lock, the newer one is taken
-    fresh, = decisions(spec("fresh", "select: [tools/app]\n", source: "../folder-gems"))
+    fresh, = decisions(spec("fresh", "select: [tools/app]\n", source: "../stable-gems"))
     expect(fresh["foo"]).to include("version" => "2.1.0-1~bookworm")
   end
 
   it "refuses a packaged gem whose .gem changed under the version the lock recorded, on gem_source" do
-    folder = File.join(@dir, "changing-gems")
-    FileUtils.mkdir_p(folder)
-    FileUtils.cp(Dir.glob(File.join(@dir, "server", "gems", "{foo,bar}-*.gem")), folder)
-    path = spec("changing", "select: [tools/app]\n", source: "../changing-gems")
-    expect(relspec("plan", path, "--write", chdir: @dir).exit_code).to eq(0)
+    folder, = planned_from_folder("changing", "{foo,bar}-*.gem")
     GemBuilder.build(folder, "foo", "2.0.0", dependencies: { "bar" => ">= 1.1", "baz" => ">= 1.0" }, date: "2021-03-03")
     run = relspec("plan", "specs/changing.yml", chdir: @dir)
     expect(run.exit_code).to eq(1)
