@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require_relative "naming"
+require_relative "gem_relations"
 
 module Relspec
   module Debian
@@ -27,9 +28,13 @@ module Relspec
 
       # The distribution's ruby-<gem> packages for the gems of an
       # OsDependencies that the release does not package itself
-      # (+release_gems+: the names it packages).
+      # (+release_gems+: the names it packages), with the entry's version
+      # constraint as Debian relations ("rice<4.0.0" → "ruby-rice (<< 4.0.0)").
       def distribution_gems(os_dependencies, release_gems)
-        (os_dependencies.gems.map { |gem| Naming.gem_name(gem) } - release_gems).map { |gem| Naming.distribution_gem(gem) }
+        os_dependencies.gems.flat_map do |entry|
+          gem = Naming.gem_name(entry)
+          release_gems.include?(gem) ? [] : GemRelations.of(Naming.distribution_gem(gem), entry.delete_prefix(gem))
+        end.uniq
       end
 
       # The OS part of the relations: apt names, then distribution gems.
