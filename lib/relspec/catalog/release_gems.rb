@@ -118,7 +118,11 @@ module Relspec
       def package_of(archive, archives, codenames)
         spec = archive.spec
         needed = archive.runtime_dependencies.map(&:first)
-        os = OsDependencies.build(apt: archive.native? ? %w[ruby-dev] : [], gems: needed - archives.keys)
+        # written as osdeps gem entries ("baz>= 1.0"), so that the distribution's
+        # ruby-baz keeps the version the gem asks for
+        outside = archive.runtime_dependencies.reject { |name, _| archives.key?(name) }
+                         .map { |name, requirement| "#{name}#{requirement unless requirement.none?}" }
+        os = OsDependencies.build(apt: archive.native? ? %w[ruby-dev] : [], gems: outside)
         Package.new(name: archive.name, package_set: nil, build_type: "gem",
                     vcs: Vcs.new(type: "gem", url: archive.origin, commit: archive.sha256).freeze,
                     commit_time: archive.time, source_dir: nil, version: archive.version,

@@ -65,7 +65,10 @@ RSpec.describe "gem osdeps resolved against the distribution and gem_source" do
     expect(plan.keys).not_to include("baz")
     catalog = result.release_catalog.catalog
     expect(catalog.package("foo").dependencies).to eq(["bar"])
-    expect(catalog.package("foo").os_dependencies_for("bookworm").gems).to eq(["baz"])
+    # foo's requirement on baz reaches its debian/control as a relation on ruby-baz
+    baz = catalog.package("foo").os_dependencies_for("bookworm")
+    expect(baz.gems).to eq(["baz>= 1.0"])
+    expect(Relspec::Debian::ControlRelations.distribution_gems(baz, %w[foo bar])).to eq(["ruby-baz (>= 1.0)"])
     expect(catalog.package("tools/app").dependencies).to include("foo")
     asked = @server.requests.drop(before)
     # (the .gem files themselves may come from the download cache of an earlier example)
