@@ -18,8 +18,9 @@ module Relspec
   class Compile
     # +unchecked+: Availability::Report::TargetResults of the targets whose
     # OS dependencies could not be checked (no source, nothing cached).
+    # +repaired+: orig cache entries found damaged and made again.
     Result = Struct.new(:release, :written, :unchanged, :published, :lock_path, :lock_changed, :osdeps_written,
-                        :unchecked, keyword_init: true)
+                        :unchecked, :repaired, keyword_init: true)
 
     # +progress+ is called with (done, total) after each source package.
     # +discard_lock+: go on without a lock that cannot be read.
@@ -53,12 +54,12 @@ module Relspec
       @catalog = @planned.release_catalog.catalog
       plan = @planned.plan
       jobs, published = jobs_of(plan)
-      written, unchanged = emit(jobs)
+      written, unchanged, repaired = emit(jobs)
       write_build_plans(plan)
       lock_changed = @planned.write_lock
       Result.new(release: @effective.release, written: written, unchanged: unchanged, published: published,
                  lock_path: @planned.lock_path, lock_changed: lock_changed, osdeps_written: write_osdeps(plan),
-                 unchecked: availability ? availability.unchecked : [])
+                 unchecked: availability ? availability.unchecked : [], repaired: repaired)
     end
 
     private
@@ -120,6 +121,7 @@ module Relspec
       written = []
       unchanged = []
       errors = []
+      repaired = []
       lock = Mutex.new
       failures = []
       Array.new([@jobs, jobs.size].min) do
@@ -131,6 +133,7 @@ module Relspec
               changed = package.emit(dir)
               lock.synchronize do
                 (changed ? written : unchanged) << dir
+                repaired.concat(package.repaired)
                 @progress&.call(written.size + unchanged.size, jobs.size)
               end
             rescue InvalidInput => e
@@ -144,7 +147,7 @@ module Relspec
       raise failures.first unless failures.empty?
       raise InvalidInput, errors unless errors.empty?
 
-      [written.sort, unchanged.sort]
+      [written.sort, unchanged.sort, repaired.uniq.sort]
     end
 
     # Leftovers of compiles that were killed: removed before this one

@@ -25,6 +25,7 @@ module Relspec
         result = Compile.run(@path, out: @out, jobs: @jobs, timeout: @timeout, progress: progress_bar,
                                     discard_lock: @discard_lock, check: @check,
                                     planned: ->(planned) { DiscardedLock.warn(planned, @err) })
+        note_repaired(result.repaired)
         if result.written.empty? && !result.lock_changed && result.osdeps_written.zero?
           @io.puts("#{result.release}: nothing changed (#{result.unchanged.size} source packages up to date)")
         else
@@ -44,6 +45,15 @@ module Relspec
         return if unchecked.empty?
 
         @io.puts("note: OS dependencies not checked on #{unchecked.map { |r| "#{r.target} (#{r.reason})" }.join('; ')}")
+      end
+
+      # A damaged cache entry is not an error (it is made again), but a
+      # cache that breaks again and again points at the disk.
+      def note_repaired(paths)
+        paths.each do |path|
+          @err.puts("warning: the orig cache entry #{path} was damaged (its SHA256 differs from the one " \
+                    "recorded when it was made); made it again")
+        end
       end
 
       # A bar on a terminal (stderr), nothing otherwise or with --quiet.

@@ -12,13 +12,17 @@ module Relspec
     module OrigCache
       module_function
 
+      # :intact, :absent (never made, or made by an older relspec without a
+      # digest) or :damaged (there, but not the bytes that were stored).
       # Nothing is deleted here: a damaged entry is replaced by store (a
       # rename), so jobs sharing the cache never remove each other's work.
-      def intact?(path)
+      def state(path)
+        return :absent unless File.file?(path) && File.file?(digest_path(path))
+
         recorded = File.read(digest_path(path)).strip
-        File.file?(path) && Digest::SHA256.file(path).hexdigest == recorded
-      rescue Errno::ENOENT
-        false
+        Digest::SHA256.file(path).hexdigest == recorded ? :intact : :damaged
+      rescue Errno::ENOENT # removed by a concurrent job between the checks
+        :absent
       end
 
       # Moves the finished +temporary+ into the cache as +path+.

@@ -45,7 +45,12 @@ module Relspec
         @overlay = overlay
         @orig_cache = orig_cache
         @substitutions = substitutions
+        @repaired = []
       end
+
+      # Orig cache entries that were damaged and made again by emit: said
+      # to the user, since a cache that keeps breaking points at the disk.
+      attr_reader :repaired
 
       def source
         @input.fetch(:deb_name)
@@ -108,8 +113,10 @@ module Relspec
         # a gem's tarball is its own bytes: a different .gem is another cache entry
         key = gem ? gem.sha256[0, 16] : "upstream"
         path = File.join(@orig_cache, key, name)
-        return path if OrigCache.intact?(path)
+        state = OrigCache.state(path)
+        return path if state == :intact
 
+        @repaired << path if state == :damaged
         FileUtils.mkdir_p(File.dirname(path))
         temporary = Temporaries.path(File.dirname(path), name)
         write_orig(temporary)
