@@ -69,10 +69,19 @@ module Relspec
         false
       end
 
+      DEPENDS = "the builds' recorded dependencies (depends:) differ; a lock written before relspec recorded " \
+                "them lacks them"
+
       def reasons(committed, computed)
         before = committed.to_h
         after = computed.to_h
-        INPUTS.filter_map { |key, meaning| meaning unless before[key] == after[key] }
+        found = INPUTS.filter_map { |key, meaning| meaning unless before[key] == after[key] }
+        found << DEPENDS if depends_of(before) != depends_of(after)
+        found
+      end
+
+      def depends_of(lock)
+        lock["targets"].transform_values { |entries| entries.transform_values { |entry| entry["depends"] } }
       end
     end
   end

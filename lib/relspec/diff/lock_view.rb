@@ -29,7 +29,7 @@ module Relspec
       def decisions(entries)
         entries.transform_values do |entry|
           Decision.new(kind: entry.decision, deb: entry.deb, version: entry.version, from: entry.from,
-                       causes: Array(entry.causes).freeze).freeze
+                       causes: Array(entry.causes).freeze, depends: entry.depends&.freeze).freeze
         end.freeze
       end
 

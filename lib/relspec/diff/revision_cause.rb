@@ -9,10 +9,11 @@ module Relspec
     # showed a bare "-1 → -2" with the cause chain of the build itself,
     # which says why the package is built, not why it is built again.
     module RevisionCause
-      # When no dependency on the cause chain changed: the lock does not
-      # record the package's other dependencies nor what else its Debian
-      # inputs hold, so the other changes of the target are only candidates.
+      # When no dependency changed. A lock that records the build's
+      # dependencies (+depends+) rules them out; an older one does not, so
+      # the other changes of the target are then only candidates.
       INPUTS = "its Debian inputs changed (a dependency, the release's settings or the packaging"
+      SETTINGS = "its Debian inputs changed (the release's settings or the packaging; none of its dependencies did)"
       # Candidates named before "and N more".
       CANDIDATES = 3
 
@@ -24,8 +25,14 @@ module Relspec
       def of(change, changes)
         return nil unless revision_bump?(change)
 
-        dependency = dependencies(change).filter_map { |name| changes[name] }.first
-        dependency ? moved(dependency) : inputs(change, changes)
+        moved = dependencies(change).filter_map { |name| changes[name] }
+        return moved.map { |dependency| moved(dependency) }.join("; ") unless moved.empty?
+
+        recorded?(change) ? SETTINGS : inputs(change, changes)
+      end
+
+      def recorded?(change)
+        !change.new.depends.nil?
       end
 
       # "its Debian inputs changed (…; changed on this target and maybe among
@@ -53,12 +60,16 @@ module Relspec
         version.to_s.rpartition("-").first
       end
 
-      # The packages the cause chains name as dependencies, nearest first:
-      # those that can have moved the package's Debian inputs.
+      # The packages that can have moved the package's Debian inputs: those
+      # the lock records (every one that changed is named), else those the
+      # cause chains name as dependencies (the nearest one only, since the
+      # chain is not the whole list).
       def dependencies(change)
+        return change.new.depends if recorded?(change)
+
         (change.new.causes + change.old.causes).filter_map do |step|
           step.delete_prefix("depends on ").split(",", 2).first if step.start_with?("depends on ")
-        end.uniq
+        end.uniq.first(1)
       end
 
       # "base/types changed version (2.0.20200302.140000-1~bionic → 2.0.20200601.103000-1~bionic)"

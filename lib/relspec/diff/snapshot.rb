@@ -4,8 +4,10 @@ module Relspec
   module Diff
     # One package's decision on one target, as the diff sees it: the kind
     # ("inherit", "build", "published", "system", "unavailable"), the Debian
-    # name and version, the ancestor it comes from and the cause chain.
-    Decision = Struct.new(:kind, :deb, :version, :from, :causes, keyword_init: true) do
+    # name and version, the ancestor it comes from, the cause chain and, for
+    # builds, the packages its debian/ names (+depends+; nil when the lock
+    # predates that record). +depends+ is not compared: it only explains.
+    Decision = Struct.new(:kind, :deb, :version, :from, :causes, :depends, keyword_init: true) do
       def built?
         %w[build published].include?(kind)
       end

@@ -9,8 +9,12 @@ module Relspec
     # - system: a gem the target distribution itself provides (+deb_name+ ruby-…, +version+).
     # +version+: a Debian::PackageVersion for builds (settled by Versioning),
     # the index's version text otherwise; +debian_digest+ (builds): the
-    # digest of the debian/ the version was settled from.
-    Decision = Struct.new(:package, :kind, :deb_name, :version, :ancestor, :cause, :debian_digest, keyword_init: true) do
+    # digest of the debian/ the version was settled from; +depends+
+    # (builds): the packages whose decisions on this target its debian/
+    # names (its direct dependencies), sorted: a change of one of them is
+    # what moves the build's revision when its own source did not change.
+    Decision = Struct.new(:package, :kind, :deb_name, :version, :ancestor, :cause, :debian_digest, :depends,
+                          keyword_init: true) do
       def inherit?
         kind == :inherit
       end

@@ -16,11 +16,12 @@ module Relspec
       FORMAT_VERSION = 2
 
       # One recorded decision: +decision+ is "inherit", "build", "published",
-      # "system" or "unavailable"; +version+ a string as written.
-      Entry = Struct.new(:decision, :deb, :version, :from, :causes, :debian_digest, keyword_init: true) do
+      # "system" or "unavailable"; +version+ a string as written; +depends+
+      # (builds; nil in locks written before it was recorded): Decision#depends.
+      Entry = Struct.new(:decision, :deb, :version, :from, :causes, :depends, :debian_digest, keyword_init: true) do
         def to_h
           { "decision" => decision, "deb" => deb, "version" => version, "from" => from, "causes" => causes,
-            "debian_digest" => debian_digest }.compact
+            "depends" => depends, "debian_digest" => debian_digest }.compact
         end
       end
 
@@ -57,7 +58,8 @@ module Relspec
 
       def self.entry_of(decision)
         Entry.new(decision: decision.kind.to_s, deb: decision.deb_name, version: decision.version&.to_s,
-                  from: decision.ancestor, causes: decision.cause&.chain, debian_digest: decision.debian_digest).freeze
+                  from: decision.ancestor, causes: decision.cause&.chain, depends: decision.depends,
+                  debian_digest: decision.debian_digest).freeze
       end
 
       def self.history_with(history, plan)

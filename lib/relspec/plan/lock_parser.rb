@@ -22,7 +22,7 @@ module Relspec
     # recorded builds become the history.
     class LockParser
       ROOT_KEYS = %w[relspec_lock release spec_digest ancestors packages targets history warnings notes].freeze
-      ENTRY_KEYS = %w[decision deb version from causes debian_digest].freeze
+      ENTRY_KEYS = %w[decision deb version from causes depends debian_digest].freeze
       PACKAGE_KEYS = %w[url commit commit_time version tag branch].freeze
       DECISIONS = %w[inherit build published system unavailable].freeze
       DIGEST = /\A[0-9a-f]{64}\z/
@@ -111,9 +111,11 @@ module Relspec
         fail_at(path + ["decision"], "unknown decision #{decision.inspect} (one of #{DECISIONS.join(', ')})") unless DECISIONS.include?(decision)
 
         causes = entry["causes"].nil? ? nil : strings(entry, path + ["causes"])
+        depends = entry["depends"].nil? ? nil : strings(entry, path + ["depends"])
         Lock::Entry.new(decision: decision, deb: optional_string(entry, path + ["deb"]),
                         version: optional_version(entry, path + ["version"]), from: optional_string(entry, path + ["from"]),
-                        causes: causes, debian_digest: entry["debian_digest"] && digest(entry, path + ["debian_digest"])).freeze
+                        causes: causes, depends: depends,
+                        debian_digest: entry["debian_digest"] && digest(entry, path + ["debian_digest"])).freeze
       end
 
       def history(data, format)

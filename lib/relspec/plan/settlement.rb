@@ -58,7 +58,9 @@ module Relspec
         result = @versioning.settle(target: target, package: package.name, deb_name: decision.deb_name,
                                     upstream: upstream, digest: digest)
         final = Decision.new(**decision.each_pair.to_h, kind: result.published ? :published : :build,
-                             version: result.version, debian_digest: digest).freeze
+                             version: result.version, debian_digest: digest,
+                             depends: package.build_dependencies.select { |name| decisions.key?(name) }.uniq.sort.freeze)
+                        .freeze
         [final, Work.new(input: input, overlay: overlay, digest: digest).freeze]
       end
     end

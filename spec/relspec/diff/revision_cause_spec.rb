@@ -7,8 +7,9 @@ require "relspec/diff"
 # decisions are written here as a lock holds them (the diff only reads
 # locks); diff_spec.rb shows the same on a real release hierarchy.
 RSpec.describe Relspec::Diff::RevisionCause do
-  def built(version, *causes)
-    Relspec::Diff::Decision.new(kind: "build", deb: "rock-x", version: version, from: nil, causes: causes).freeze
+  def built(version, *causes, depends: nil)
+    Relspec::Diff::Decision.new(kind: "build", deb: "rock-x", version: version, from: nil, causes: causes,
+                                depends: depends).freeze
   end
 
   def compare(old, new)
@@ -57,6 +58,31 @@ RSpec.describe Relspec::Diff::RevisionCause do
     expect(changes["tools/x"].rebuilt_because)
       .to eq("its Debian inputs changed (a dependency, the release's settings or the packaging; " \
              "changed on this target and maybe among its dependencies: a, b, c, 1 more)")
+  end
+
+  # Locks record each build's dependencies (depends:): every dependency
+  # that moved is named, also those off the cause chain, and other changes
+  # of the target are not offered as candidates.
+  it "names every recorded dependency that changed, on the cause chain or not" do
+    inherited = ->(version) { Relspec::Diff::Decision.new(kind: "inherit", deb: "rock-b-cmake", version: version, from: "b", causes: []).freeze }
+    old = { "base/cmake" => inherited.call("1.0-1~bionic"), "base/types" => built("2.0.1-1~bionic", blacklisted),
+            "other" => built("5-1~bionic"),
+            "drivers/io" => built("1.0.5-1~bionic", "depends on base/types", blacklisted, depends: %w[base/cmake base/types]) }
+    new = { "base/cmake" => inherited.call("1.1-1~bionic"), "base/types" => built("2.0.2-1~bionic", blacklisted),
+            "other" => built("6-1~bionic"),
+            "drivers/io" => built("1.0.5-2~bionic", "depends on base/types", blacklisted, depends: %w[base/cmake base/types]) }
+    expect(compare(old, new)["drivers/io"].rebuilt_because)
+      .to eq("base/cmake changed version (1.0-1~bionic → 1.1-1~bionic); " \
+             "base/types changed version (2.0.1-1~bionic → 2.0.2-1~bionic)")
+  end
+
+  it "says no dependency moved when the lock records them and none changed" do
+    changes = compare({ "other" => built("5-1~bionic"), "base/types" => built("2-1~bionic"),
+                        "tools/x" => built("0.9-1~bionic", blacklisted, depends: ["base/types"]) },
+                      { "other" => built("6-1~bionic"), "base/types" => built("2-1~bionic"),
+                        "tools/x" => built("0.9-2~bionic", blacklisted, depends: ["base/types"]) })
+    expect(changes["tools/x"].rebuilt_because)
+      .to eq("its Debian inputs changed (the release's settings or the packaging; none of its dependencies did)")
   end
 
   it "leaves new sources and inherited packages to the commit range and the ancestor" do

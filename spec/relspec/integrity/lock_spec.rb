@@ -25,6 +25,17 @@ RSpec.describe "the lock file" do
     lock = Relspec::Plan::LockParser.read(@lock_path, release: "rel")
     expect(Relspec::Plan::LockGenerator.dump(lock)).to eq(@good)
     expect(lock.history.build("bionic/amd64", "base/cmake", "1.0.20200504.080000").revision).to eq(1)
+    # a build records what its debian/ names, here nothing
+    expect(lock.targets.dig("bionic/amd64", "base/cmake").depends).to eq([])
+  end
+
+  it "reads a lock written before builds recorded their dependencies" do
+    File.binwrite(@lock_path, @good.sub(/^ +depends: \[\]\n/, ""))
+    lock = Relspec::Plan::LockParser.read(@lock_path, release: "rel")
+    expect(lock.targets.dig("bionic/amd64", "base/cmake").depends).to be_nil
+    run = relspec("plan", "specs/rel.yml", "--check", chdir: @dir)
+    expect(run.exit_code).to eq(1)
+    expect(run.stdout).to include("releases/rel/lock.yml: out of date\n  the builds' recorded dependencies (depends:) differ")
   end
 
   damaged = {
@@ -36,6 +47,7 @@ RSpec.describe "the lock file" do
     "a revision of the wrong type" => [:revision, /lock.yml:\d+:\d+: error\[lock\]: .*revision must be a positive whole number/],
     "a list where targets belong" => [:targets, /lock.yml:\d+:\d+: error\[lock\]: .*targets must be a mapping/],
     "an invalid version" => [:version, /lock.yml:\d+:\d+: error\[lock\]: .*invalid Debian version "not a version"/],
+    "depends that is not a list of names" => [:depends, /lock.yml:\d+:\d+: error\[lock\]: .*depends must be a list of text/],
     "another release's lock" => [:release, /lock.yml:3:\d+: error\[lock\]: .*the lock is of release other, not rel/]
   }
 
@@ -45,6 +57,7 @@ RSpec.describe "the lock file" do
     when :targets then @good.sub(/^targets:\n(  .*\n)+/, "targets: [a, b]\n")
     when :version then @good.sub(/version: "1\.0\.20200504\.080000-1~bionic"/, 'version: "not a version"')
     when :release then @good.sub("release: rel", "release: other")
+    when :depends then @good.sub("depends: []", "depends: 5")
     else kind
     end
   end
