@@ -47,7 +47,9 @@ module LargeLocks
     # a chain of up to five steps, ending at the blacklisted package 0
     causes = index.zero? ? [] : (index % 5).downto(0).map { |step| "depends on generated/package_with_a_long_name_#{format('%04d', step)}" }
     causes << 'blacklisted by "generated/package_with_a_long_name_0000" (the project needs its own build of it)'
+    # what its debian/ names: the previous package and package 0
+    depends = [0, index - 1].uniq.map { |step| "generated/package_with_a_long_name_#{format('%04d', step)}" }
     Relspec::Plan::Lock::Entry.new(decision: "build", deb: deb.sub("rock-base", "rock-big"), version: "1.1.20200101.000000-1~#{codename}",
-                                   causes: causes, debian_digest: DIGEST)
+                                   causes: causes, depends: index.zero? ? [] : depends, debian_digest: DIGEST)
   end
 end
