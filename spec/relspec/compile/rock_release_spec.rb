@@ -4,16 +4,18 @@ require "spec_helper"
 require "yaml"
 require_relative "../../support/rock_workspace"
 require_relative "../../support/rock_gems"
-require_relative "../../support/unpacked_root"
+require_relative "../../support/installed_system"
 
 # Real Rock packages, as a release maintainer compiles them: base/cmake,
 # base/logging, base/types and utilrb from their real repositories (git
 # bundles in ../shared), described by the project's own package sets,
 # compiled for bookworm/amd64 with no overlays, every package built by
 # `relspec build` with sbuild in a clean chroot (in dependency order), the
-# .debs unpacked at /opt in a private mount namespace, then used through
-# the packages' env.sh only. The release is compiled and built once for
-# the whole group (base/types takes most of the time).
+# .debs installed with apt into another clean bookworm system (made from
+# the same chroot tarball; apt fetches their Depends from the archive),
+# then used there through the packages' env.sh only. The release is
+# compiled, built and installed once for the whole group (base/types takes
+# most of the time).
 RSpec.describe "a release of real Rock packages" do
   let(:release) { "rock" }
 
@@ -51,12 +53,15 @@ RSpec.describe "a release of real Rock packages" do
     @results = YAML.safe_load(File.read(File.join(@target, "build-results.yml")))
     raise "build failed:\n#{@build.stdout}#{@build.stderr}#{failed_logs}" unless @build.exit_code.zero?
 
-    @host = UnpackedRoot.new(File.join(@dir, "installed"))
     @debs = @results.fetch("packages").values.to_h do |record|
-      debs = record.fetch("files").map { |file| File.join(@target, file.fetch("name")) }.grep(/[.]deb\z/)
-      debs.each { |deb| @host.install(deb) }
-      [record.fetch("package"), debs]
+      [record.fetch("package"), record.fetch("files").map { |file| File.join(@target, file.fetch("name")) }.grep(/[.]deb\z/)]
     end
+    @system = InstalledSystem.new(File.join(CliRunner::CACHE, "relspec", "chroots", "bookworm-amd64.tar.zst"),
+                                  File.join(@dir, "system"))
+    # pkg-config is the user's tool for the C++ check, not a dependency of the release
+    @install = @system.install(@debs.values.flatten.grep_v(/-dbgsym_/), packages: %w[pkg-config])
+    # a Rock user's machine has autoproj's own utilrb and facets, newer than the release's
+    @system.install_gems(%w[utilrb facets].map { |name| Gem.loaded_specs.fetch(name).cache_file })
   end
 
   after(:all) { FileUtils.rm_rf(@dir) if @dir }
@@ -124,28 +129,39 @@ RSpec.describe "a release of real Rock packages" do
                              "-DCMAKE_INSTALL_PREFIX=$(PREFIX)")
   end
 
+  # apt resolved every Depends of the release's packages from bookworm's archive (ruby, boost, …)
+  it "installs every package with apt into a clean bookworm system, with its dependencies" do
+    expect(@install).to match(/^Setting up rock-rock-base-types /)
+    listed, status = @system.run("dpkg-query -W -f '${Package} ${Status}\\n' 'rock-rock-*'")
+    expect(status).to be_success, listed
+    installed = listed.lines.map(&:split).select { |fields| fields.last == "installed" }.map(&:first)
+    expect(installed).to match_array(@results.fetch("packages").keys)
+    audit, status = @system.run("dpkg --audit")
+    expect([audit, status.success?]).to eq(["", true])
+  end
+
   it "lets a C++ program use a base/types header and its pkg-config file through env.sh only" do
     program = <<~CPP
       #include <base/Angle.hpp>
       #include <iostream>
       int main() { std::cout << base::Angle::fromDeg(90).getDeg() << std::endl; return 0; }
     CPP
-    File.write(File.join(@dir, "angle.cpp"), program)
-    output, status = @host.shell(<<~SH, chdir: @dir)
+    File.write(@system.path("root/angle.cpp"), program)
+    output, status = @system.run(<<~SH)
       set -eu
+      cd /root
       . #{prefix('rock-rock-base-types')}/env.sh
       g++ -std=c++11 -o angle angle.cpp $(pkg-config --cflags --libs base-types)
       ./angle
     SH
-    # (the program is in the test's folder, not the builder's)
     expect(status).to be_success, output
     expect(output.lines.last).to eq("90\n")
   end
 
-  # This machine has utilrb 3.2.0 and facets 4.0.0 installed as gems (autoproj's own dependencies),
+  # The system has utilrb 3.2.0 and facets 4.0.0 installed as gems (autoproj's own dependencies),
   # both newer than the release's: the release's code must still be what Ruby loads.
   it "lets Ruby load utilrb and facets through env.sh only, with an empty GEM_HOME" do
-    output, status = @host.shell(<<~SH)
+    output, status = @system.run(<<~SH)
       set -eu
       . #{prefix('rock-rock-ruby-utilrb')}/env.sh
       export GEM_HOME=$(mktemp -d)
@@ -186,7 +202,7 @@ RSpec.describe "a release of real Rock packages" do
   end
 
   it "sources shared dependencies once, keeps the system gem path, and works under set -u" do
-    output, status = @host.shell(<<~SH)
+    output, status = @system.run(<<~SH)
       set -eu
       . #{prefix('rock-rock-base-types')}/env.sh
       . #{prefix('rock-rock-base-logging')}/env.sh

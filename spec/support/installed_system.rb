@@ -1,0 +1,76 @@
+# frozen_string_literal: true
+
+require "fileutils"
+require "open3"
+
+# A clean Debian system made from the chroot tarball `relspec build
+# --backend sbuild` keeps in its cache, in which built .debs are really
+# installed: apt-get takes the .deb files and fetches their Depends from
+# the distribution's archive (the tarball's own apt sources), dpkg unpacks
+# them and runs their maintainer scripts. A package that forgets a runtime
+# dependency fails here, where UnpackedRoot (dpkg-deb -x on the host) would
+# not notice.
+#
+# Commands run through `chroot`, root only (as CI runs), in a private mount
+# namespace with /proc and /dev of their own, so nothing is mounted on the
+# host after a command ends and the folder can simply be removed.
+class InstalledSystem
+  Failed = Class.new(StandardError)
+
+  PATH = "/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin"
+
+  attr_reader :root
+
+  # +tarball+: a chroot tarball (.tar.zst); +dir+: an empty folder.
+  def initialize(tarball, dir)
+    @root = File.join(dir, "root")
+    FileUtils.mkdir_p(@root)
+    output, status = Open3.capture2e("tar", "--zstd", "-xf", tarball, "-C", @root)
+    raise Failed, "cannot unpack #{tarball}:\n#{output}" unless status.success?
+
+    # the name server of now, not of the day the tarball was made
+    FileUtils.cp("/etc/resolv.conf", File.join(@root, "etc", "resolv.conf")) if File.file?("/etc/resolv.conf")
+  end
+
+  # Installs the .deb files +debs+ and the distribution packages named in
+  # +packages+, with every dependency, as a user would with apt.
+  def install(debs, packages: [])
+    staged = File.join(@root, "tmp", "debs")
+    FileUtils.mkdir_p(staged)
+    FileUtils.cp(debs, staged)
+    local = debs.map { |deb| "/tmp/debs/#{File.basename(deb)}" }
+    output, status = run("apt-get update -q && apt-get install -y -q --no-install-recommends \"$@\"",
+                         *local, *packages, env: { "DEBIAN_FRONTEND" => "noninteractive" })
+    raise Failed, "apt-get install failed:\n#{output}" unless status.success?
+
+    output
+  end
+
+  # Installs the .gem files +gems+ into the system's own gem folder (as
+  # `gem install` as root would), without their dependencies.
+  def install_gems(gems)
+    staged = File.join(@root, "tmp", "gems")
+    FileUtils.mkdir_p(staged)
+    FileUtils.cp(gems, staged)
+    output, status = run('gem install --local --ignore-dependencies --no-document "$@"',
+                         *gems.map { |gem| "/tmp/gems/#{File.basename(gem)}" })
+    raise Failed, "gem install failed:\n#{output}" unless status.success?
+
+    output
+  end
+
+  # Runs the bash +script+ in the system as a user's login shell would
+  # (clean environment, HOME=/root), with +args+ as $1…; [output, status].
+  def run(script, *args, env: {})
+    environment = { "PATH" => PATH, "HOME" => "/root", "LANG" => "C.UTF-8" }.merge(env)
+                                                                                .map { |name, value| "#{name}=#{value}" }
+    Open3.capture2e({}, "unshare", "--mount", "--propagation", "private", "--fork", "--pid", "sh", "-c",
+                    'mount -t proc proc "$0/proc" && mount --rbind /dev "$0/dev" && exec chroot "$@"', @root,
+                    @root, "env", "-i", *environment, "bash", "-c", script, "bash", *args, unsetenv_others: true)
+  end
+
+  # The host path of +path+ inside the system.
+  def path(path)
+    File.join(@root, path)
+  end
+end
