@@ -9,6 +9,7 @@
 # to be patched not to write into the workspace (ReadOnlyConfiguration).
 require "autoproj"
 require "tmpdir"
+require_relative "autoproj_messages"
 require_relative "copyright_holders"
 
 module Relspec
@@ -103,15 +104,16 @@ module Relspec
 
       # autobuild's progress display writes to STDOUT (with terminal escape
       # codes): relspec's stdout is its output (JSON, plans), so autoproj's
-      # messages go to stderr while it loads, without progress lines.
+      # messages are collected while it loads and go to stderr, each once
+      # (AutoprojMessages).
       def on_stderr
         previous = Autobuild.instance_variable_get(:@display)
-        display = Autobuild::ProgressDisplay.new($stderr)
-        display.progress_enabled = false
-        Autobuild.instance_variable_set(:@display, display)
+        messages = AutoprojMessages.new
+        Autobuild.instance_variable_set(:@display, AutoprojMessages::Display.new(messages))
         yield
       ensure
         Autobuild.instance_variable_set(:@display, previous)
+        $stderr.write(messages.to_s)
       end
 
       def autoproj_problem(error)
