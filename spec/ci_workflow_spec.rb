@@ -65,6 +65,8 @@ RSpec.describe "the CI workflow of docs/ci.md" do
     expect(output).to include("releases/child/lock.yml: out of date")
     expect(output).to include("the spec (or one of its ancestors' specs) changed")
     expect(output).to match(%r{inherit → build\s+base/logging})
+    # depends: follows the decisions here: not a reason of its own
+    expect(output).not_to include("recorded dependencies")
   end
 
   it "writes the no-change note when the pull request changes no release" do

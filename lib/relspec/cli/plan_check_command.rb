@@ -76,12 +76,15 @@ module Relspec
         before = committed.to_h
         after = computed.to_h
         found = INPUTS.filter_map { |key, meaning| meaning unless before[key] == after[key] }
-        found << DEPENDS if depends_of(before) != depends_of(after)
+        # said only when nothing else of the decisions differs: when they
+        # do, depends: follows them and the decision diff says more
+        found << DEPENDS if before["targets"] != after["targets"] &&
+                            without_depends(before["targets"]) == without_depends(after["targets"])
         found
       end
 
-      def depends_of(lock)
-        lock["targets"].transform_values { |entries| entries.transform_values { |entry| entry["depends"] } }
+      def without_depends(targets)
+        targets.transform_values { |entries| entries.transform_values { |entry| entry.reject { |key, _| key == "depends" } } }
       end
     end
   end

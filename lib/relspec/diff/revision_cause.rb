@@ -13,7 +13,10 @@ module Relspec
       # dependencies (+depends+) rules them out; an older one does not, so
       # the other changes of the target are then only candidates.
       INPUTS = "its Debian inputs changed (a dependency, the release's settings or the packaging"
-      SETTINGS = "its Debian inputs changed (the release's settings or the packaging; none of its dependencies did)"
+      # (debian/ also names where the whole dependency closure is installed,
+      # which the lock does not record per build)
+      SETTINGS = "its Debian inputs changed (the release's settings, the packaging or where an indirect dependency " \
+                 "is installed; none of its direct dependencies did)"
       # Candidates named before "and N more".
       CANDIDATES = 3
 
@@ -25,14 +28,27 @@ module Relspec
       def of(change, changes)
         return nil unless revision_bump?(change)
 
-        moved = dependencies(change).filter_map { |name| changes[name] }
-        return moved.map { |dependency| moved(dependency) }.join("; ") unless moved.empty?
+        # a change of cause chain only is not in debian/
+        moved = dependencies(change).filter_map { |name| changes[name] }.reject { |other| other.kind == "cause" }
+        reasons = moved.map { |dependency| moved(dependency) }
+        reasons << relisted(change) if recorded?(change) && !change.old.depends.nil? && change.old.depends != change.new.depends
+        return reasons.join("; ") unless reasons.empty?
 
         recorded?(change) ? SETTINGS : inputs(change, changes)
       end
 
       def recorded?(change)
         !change.new.depends.nil?
+      end
+
+      # "its dependencies changed (now also base/logging; no longer base/cmake)"
+      def relisted(change)
+        added = change.new.depends - change.old.depends
+        removed = change.old.depends - change.new.depends
+        parts = []
+        parts << "now also #{added.join(', ')}" unless added.empty?
+        parts << "no longer #{removed.join(', ')}" unless removed.empty?
+        "its dependencies changed (#{parts.join('; ')})"
       end
 
       # "its Debian inputs changed (…; changed on this target and maybe among

@@ -61,7 +61,7 @@ RSpec.describe "a release of real Rock packages" do
     # pkg-config is the user's tool for the C++ check, not a dependency of the release
     @install = @system.install(@debs.values.flatten.grep_v(/-dbgsym_/), packages: %w[pkg-config])
     # a Rock user's machine has autoproj's own utilrb and facets, newer than the release's
-    @system.install_gems(%w[utilrb facets].map { |name| Gem.loaded_specs.fetch(name).cache_file })
+    @system.install_gems(%w[utilrb facets].map { |name| (Gem.loaded_specs[name] || Gem::Specification.find_by_name(name)).cache_file })
   end
 
   after(:all) { FileUtils.rm_rf(@dir) if @dir }

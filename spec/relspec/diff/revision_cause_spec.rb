@@ -82,7 +82,26 @@ RSpec.describe Relspec::Diff::RevisionCause do
                       { "other" => built("6-1~bionic"), "base/types" => built("2-1~bionic"),
                         "tools/x" => built("0.9-2~bionic", blacklisted, depends: ["base/types"]) })
     expect(changes["tools/x"].rebuilt_because)
-      .to eq("its Debian inputs changed (the release's settings or the packaging; none of its dependencies did)")
+      .to eq("its Debian inputs changed (the release's settings, the packaging or where an indirect dependency is " \
+             "installed; none of its direct dependencies did)")
+  end
+
+  it "does not take a dependency whose cause chain alone changed for what moved the revision" do
+    changes = compare({ "base/types" => built("2-1~bionic", "pinned"),
+                        "tools/x" => built("0.9-1~bionic", blacklisted, depends: ["base/types"]) },
+                      { "base/types" => built("2-1~bionic", "blacklisted"),
+                        "tools/x" => built("0.9-2~bionic", blacklisted, depends: ["base/types"]) })
+    expect(changes["base/types"].kind).to eq("cause")
+    expect(changes["tools/x"].rebuilt_because).to start_with("its Debian inputs changed (the release's settings")
+  end
+
+  it "names dependencies the build gained or lost" do
+    changes = compare({ "base/cmake" => built("1-1~bionic"),
+                        "tools/x" => built("0.9-1~bionic", blacklisted, depends: ["base/cmake"]) },
+                      { "base/logging" => built("1-1~bionic"),
+                        "tools/x" => built("0.9-2~bionic", blacklisted, depends: ["base/logging"]) })
+    expect(changes["tools/x"].rebuilt_because)
+      .to eq("base/logging changed (added); its dependencies changed (now also base/logging; no longer base/cmake)")
   end
 
   it "leaves new sources and inherited packages to the commit range and the ancestor" do
