@@ -61,8 +61,7 @@ module Relspec
         text = Osdeps::ReleaseIndex.render(releases, repo_url: options[:repo_url], public_key: options[:public_key])
         target = File.join(File.dirname(options[:specs]), "releases", "releases.yml").delete_prefix("./")
         FileUtils.mkdir_p(File.dirname(target))
-        AtomicFile.write(target, text)
-        $stderr.puts("wrote #{target}")
+        $stderr.puts("#{AtomicFile.update(target, text) ? 'wrote' : 'unchanged'} #{target}")
       end
 
       desc "select", "Apply a user's deb_blacklist.yml: write rock-osdeps.osdeps and rock-osdeps.inactive"

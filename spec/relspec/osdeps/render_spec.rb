@@ -84,5 +84,8 @@ RSpec.describe "relspec osdeps render" do
                      "separate_prefixes" => true },
       "child" => { "depends_on" => "parent" }, "parent" => nil
     )
+    expect(run.stderr).to eq("wrote releases/releases.yml\n")
+    again = relspec("osdeps", "index", "--public-key", "https://example.org/releases/key.asc", chdir: @dir)
+    expect(again.stderr).to eq("unchanged releases/releases.yml\n")
   end
 end
