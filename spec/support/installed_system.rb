@@ -35,28 +35,14 @@ class InstalledSystem
   # Installs the .deb files +debs+ and the distribution packages named in
   # +packages+, with every dependency, as a user would with apt.
   def install(debs, packages: [])
-    staged = File.join(@root, "tmp", "debs")
-    FileUtils.mkdir_p(staged)
-    FileUtils.cp(debs, staged)
-    local = debs.map { |deb| "/tmp/debs/#{File.basename(deb)}" }
-    output, status = run("apt-get update -q && apt-get install -y -q --no-install-recommends \"$@\"",
-                         *local, *packages, env: { "DEBIAN_FRONTEND" => "noninteractive" })
-    raise Failed, "apt-get install failed:\n#{output}" unless status.success?
-
-    output
+    run!("apt-get update -q && apt-get install -y -q --no-install-recommends \"$@\"",
+         *stage(debs, "debs"), *packages, env: { "DEBIAN_FRONTEND" => "noninteractive" })
   end
 
   # Installs the .gem files +gems+ into the system's own gem folder (as
   # `gem install` as root would), without their dependencies.
   def install_gems(gems)
-    staged = File.join(@root, "tmp", "gems")
-    FileUtils.mkdir_p(staged)
-    FileUtils.cp(gems, staged)
-    output, status = run('gem install --local --ignore-dependencies --no-document "$@"',
-                         *gems.map { |gem| "/tmp/gems/#{File.basename(gem)}" })
-    raise Failed, "gem install failed:\n#{output}" unless status.success?
-
-    output
+    run!('gem install --local --ignore-dependencies --no-document "$@"', *stage(gems, "gems"))
   end
 
   # Runs the bash +script+ in the system as a user's login shell would
@@ -67,6 +53,21 @@ class InstalledSystem
     Open3.capture2e({}, "unshare", "--mount", "--propagation", "private", "--fork", "--pid", "sh", "-c",
                     'mount -t proc proc "$0/proc" && mount --rbind /dev "$0/dev" && exec chroot "$@"', @root,
                     @root, "env", "-i", *environment, "bash", "-c", script, "bash", *args, unsetenv_others: true)
+  end
+
+  # #run, raising Failed with the output when +script+ fails; the output.
+  def run!(script, *args, env: {})
+    output, status = run(script, *args, env: env)
+    raise Failed, "#{script} failed:\n#{output}" unless status.success?
+
+    output
+  end
+
+  # Copies +files+ into /tmp/<folder> of the system; their paths there.
+  def stage(files, folder)
+    FileUtils.mkdir_p(path("tmp/#{folder}"))
+    FileUtils.cp(files, path("tmp/#{folder}"))
+    files.map { |file| "/tmp/#{folder}/#{File.basename(file)}" }
   end
 
   # The host path of +path+ inside the system.

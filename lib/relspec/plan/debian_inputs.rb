@@ -44,6 +44,12 @@ module Relspec
         @install_dirs.fetch(key) { @install_dirs[key] = compute_install_dir(decision) }
       end
 
+      # The dependencies of +package+ that debian/ names: those with a
+      # decision on the target, in the package's order.
+      def dependency_names(package, decisions)
+        package.build_dependencies.select { |name| decisions.key?(name) }
+      end
+
       private
 
       def compute_install_dir(decision)
@@ -57,9 +63,9 @@ module Relspec
       end
 
       def dependencies_of(package, decisions)
-        package.build_dependencies.filter_map do |name|
+        dependency_names(package, decisions).map do |name|
           decision = decisions[name]
-          decision && { deb_name: decision.deb_name, version: decision.version.to_s, install_dir: install_dir_of(decision) }
+          { deb_name: decision.deb_name, version: decision.version.to_s, install_dir: install_dir_of(decision) }
         end
       end
 

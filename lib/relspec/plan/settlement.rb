@@ -59,7 +59,7 @@ module Relspec
                                     upstream: upstream, digest: digest)
         final = Decision.new(**decision.each_pair.to_h, kind: result.published ? :published : :build,
                              version: result.version, debian_digest: digest,
-                             depends: package.build_dependencies.select { |name| decisions.key?(name) }.uniq.sort.freeze)
+                             depends: @inputs.dependency_names(package, decisions).uniq.sort.freeze)
                         .freeze
         [final, Work.new(input: input, overlay: overlay, digest: digest).freeze]
       end
