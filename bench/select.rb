@@ -18,7 +18,7 @@ $LOAD_PATH.unshift(File.expand_path("../lib", __dir__))
 require "relspec/apt/package_index"
 require "relspec/osdeps/selection"
 require "relspec/osdeps/blacklist_file"
-require "relspec/spec/package_pattern"
+require "relspec/release_spec/package_pattern"
 
 COUNT = Integer(ARGV.fetch(0, "400"))
 BLACKLISTED = Integer(ARGV.fetch(1, "5"))
@@ -67,7 +67,7 @@ Dir.mktmpdir("relspec-bench-select") do |dir|
 
   mapping = Array.new(COUNT) { |i| ["pkg/p#{i}", deb(i)] }.to_h
   blacklisted = Array.new(BLACKLISTED) { |i| 20 + (i * 17) } # low in the graph: many reverse dependencies
-  entries = blacklisted.map { |i| Relspec::Osdeps::BlacklistFile::Entry.new(Relspec::Spec::PackagePattern.parse("pkg/p#{i}"), "bench") }
+  entries = blacklisted.map { |i| Relspec::Osdeps::BlacklistFile::Entry.new(Relspec::ReleaseSpec::PackagePattern.parse("pkg/p#{i}"), "bench") }
 
   ours = nil
   relspec = Timing.median(RUNS) do

@@ -67,8 +67,8 @@ $LOAD_PATH.unshift(File.join(ROOT, "lib"))
 require "relspec"
 def in_process_seconds(dir)
   Timing.median(RUNS) do
-    library = Relspec::Spec::Library.new(dir)
-    library.paths.each { |path| Relspec::Spec::Resolution.of(library, path) }
+    library = Relspec::ReleaseSpec::Library.new(dir)
+    library.paths.each { |path| Relspec::ReleaseSpec::Resolution.of(library, path) }
   end
 end
 rows[0] << in_process_seconds(File.join(ROOT, "specs"))

@@ -1,6 +1,6 @@
 # frozen_string_literal: true
 
-require_relative "spec"
+require_relative "release_spec"
 require_relative "catalog/release_catalog"
 require_relative "catalog/cache"
 require_relative "display_path"
@@ -39,7 +39,7 @@ module Relspec
     # +discard_lock+: start without the lock's history when it cannot be read.
     def self.compute(path, timeout: 10, cache_dir: Apt::Cache.default_dir, catalog_cache: Catalog::Cache.new,
                      discard_lock: false)
-      resolution = Spec.resolve(path)
+      resolution = ReleaseSpec.resolve(path)
       effective = resolution.effective
       lock_path = Lock.path(project_root(path), effective.release)
       previous = read_lock(lock_path, effective.release, discard_lock)

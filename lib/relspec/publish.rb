@@ -1,7 +1,7 @@
 # frozen_string_literal: true
 
 require "fileutils"
-require_relative "spec"
+require_relative "release_spec"
 require_relative "plan"
 require_relative "atomic_file"
 require_relative "diagnostic"
@@ -31,7 +31,7 @@ module Relspec
     # +target+: "codename/arch" or nil (all targets); +waiting+: called
     # when another publisher holds the repository.
     def self.run(path, out:, target: nil, timeout: 10, waiting: nil)
-      resolution = Spec.resolve(path)
+      resolution = ReleaseSpec.resolve(path)
       effective = resolution.effective
       repository = repository_path(resolution)
       all = Plan::Target.all(effective)

@@ -17,7 +17,7 @@ class ReleaseFixture
   def initialize(root)
     @root = root
     @builder = builder = DemoWorkspace.build(File.join(root, "ws"))
-    @catalog = Relspec::Catalog::AutoprojSource.load(builder.root, Relspec::Spec::Distributions::BUILTIN.slice("bionic", "buster", "focal"))
+    @catalog = Relspec::Catalog::AutoprojSource.load(builder.root, Relspec::ReleaseSpec::Distributions::BUILTIN.slice("bionic", "buster", "focal"))
     File.write(File.join(root, "catalog.yml"), Relspec::Catalog::SnapshotSource.dump(@catalog))
     FileUtils.mkdir_p(File.join(root, "specs"))
   end

@@ -15,7 +15,7 @@ module SpecWriter
   end
 
   def resolve(dir, name)
-    library = Relspec::Spec::Library.new(dir)
-    Relspec::Spec::Resolution.of(library, library.path_for(name))
+    library = Relspec::ReleaseSpec::Library.new(dir)
+    Relspec::ReleaseSpec::Resolution.of(library, library.path_for(name))
   end
 end

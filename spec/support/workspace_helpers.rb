@@ -9,7 +9,7 @@ module WorkspaceHelpers
   TARGETS = %w[bionic buster].freeze
 
   def distributions(codenames = TARGETS)
-    Relspec::Spec::Distributions::BUILTIN.slice(*codenames)
+    Relspec::ReleaseSpec::Distributions::BUILTIN.slice(*codenames)
   end
 
   def load_catalog(root, codenames = TARGETS)

@@ -17,7 +17,7 @@ module Relspec
     # patched not to write into the workspace. Commits and commit times come
     # from the checkouts' .git folders.
     class AutoprojSource
-      # +distributions+: codename => Spec::Distribution, the targets to resolve
+      # +distributions+: codename => ReleaseSpec::Distribution, the targets to resolve
       # OS dependencies for.
       # +manifests+: name => manifest.xml text autoproj reads instead of the
       # checkout's (PinnedManifests).

@@ -8,7 +8,7 @@ require_relative "metapackages"
 require_relative "release_gems"
 require_relative "gem_resolution"
 require_relative "../display_path"
-require_relative "../spec/package_pattern"
+require_relative "../release_spec/package_pattern"
 
 module Relspec
   class Catalog
@@ -29,7 +29,7 @@ module Relspec
         end
       end
 
-      # +resolution+: a valid Spec::Resolution; +cache+: a Catalog::Cache
+      # +resolution+: a valid ReleaseSpec::Resolution; +cache+: a Catalog::Cache
       # for catalogs read from workspaces, or nil; +gem_fetch+: (name,
       # version) → GemArchive (default: from the spec's gem_source);
       # +gem_archives+: a callable giving target name => {ruby-* name =>
@@ -91,7 +91,7 @@ module Relspec
 
         effective = resolution.effective
         spec_dir = File.dirname(resolution.spec_file.path)
-        blacklist = (effective["blacklist"] || []).map { |entry| Spec::PackagePattern.parse(entry["match"]) }
+        blacklist = (effective["blacklist"] || []).map { |entry| ReleaseSpec::PackagePattern.parse(entry["match"]) }
         selected = names.to_h { |codename, list| [codename, list.select { |name| catalog.package?(name) }] }
         GemResolution.new(catalog: catalog, selected: selected, pinned: effective["gems"] || {}, archives: archives,
                           locked: locked, versions: GemVersions.new(effective["gem_source"], base_dir: spec_dir, timeout: timeout),

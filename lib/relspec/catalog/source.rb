@@ -12,7 +12,7 @@ module Relspec
     module Source
       module_function
 
-      # +distributions+: codename => Spec::Distribution the OS dependencies
+      # +distributions+: codename => ReleaseSpec::Distribution the OS dependencies
       # must be known for.
       # +cache+: a Catalog::Cache for workspaces (nil: always load).
       # +manifests+: name => manifest.xml text read instead of the checkout's.

@@ -1,7 +1,7 @@
 # frozen_string_literal: true
 
 require "json"
-require_relative "../build"
+require_relative "../builder"
 
 module Relspec
   module CLI
@@ -21,7 +21,7 @@ module Relspec
 
       def call
         listener = @progress_io&.tty? && @format == "text" ? BuildProgress.new(@progress_io) : nil
-        reports = Build.run(@path, **@options, listener: listener)
+        reports = Builder.run(@path, **@options, listener: listener)
         @format == "json" ? @io.puts(JSON.pretty_generate(reports.map { |report| as_json(report) })) : print_text(reports)
         reports.any?(&:failed?) ? 1 : 0
       end

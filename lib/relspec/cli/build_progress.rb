@@ -4,7 +4,7 @@ module Relspec
   module CLI
     # The progress of `relspec build` on a terminal: packages done/total,
     # the ones building now and the elapsed time, one bar per target.
-    # Listens to Build.run (start, building, finished).
+    # Listens to Builder.run (start, building, finished).
     class BuildProgress
       def initialize(io)
         require "tty-progressbar"

@@ -24,7 +24,7 @@ module Relspec
       option :targets, type: :string, desc: "Distribution codenames, comma separated (default: every built-in one)"
       option :output, aliases: "-o", type: :string, desc: "Write to this file (atomically) instead of stdout"
       def export(workspace)
-        require_relative "../spec/distribution"
+        require_relative "../release_spec/distribution"
         require_relative "../catalog/autoproj_source"
         require_relative "../catalog/snapshot_source"
         catalog = Catalog::AutoprojSource.load(workspace, distributions(options[:targets]))
@@ -36,9 +36,9 @@ module Relspec
       option :target, type: :string, desc: "Only this distribution codename"
       option :format, enum: %w[text json], default: "text", desc: "Output format"
       def show(path)
-        require_relative "../spec"
+        require_relative "../release_spec"
         require_relative "../catalog/release_catalog"
-        release = Catalog::ReleaseCatalog.load(Spec.resolve(path))
+        release = Catalog::ReleaseCatalog.load(ReleaseSpec.resolve(path))
         selections = release.selections
         if options[:target]
           unless selections.key?(options[:target])
@@ -53,7 +53,7 @@ module Relspec
       private
 
       def distributions(list)
-        known = Spec::Distributions::BUILTIN
+        known = ReleaseSpec::Distributions::BUILTIN
         return known unless list
 
         names = list.split(",").map(&:strip)

@@ -52,12 +52,12 @@ module Relspec
       option :repo_url, type: :string, desc: "Base URL of the releases (default: the one most releases share)"
       option :public_key, type: :string, desc: "URL of the key that signs the releases"
       def index
-        require_relative "../spec"
+        require_relative "../release_spec"
         require_relative "../osdeps/release_index"
-        library = Spec::Library.new(options[:specs])
+        library = ReleaseSpec::Library.new(options[:specs])
         raise Error, "#{options[:specs]}/ holds no release spec" if library.names.empty?
 
-        releases = library.paths.map { |path| Spec.resolve(path).effective }
+        releases = library.paths.map { |path| ReleaseSpec.resolve(path).effective }
         text = Osdeps::ReleaseIndex.render(releases, repo_url: options[:repo_url], public_key: options[:public_key])
         target = File.join(File.dirname(options[:specs]), "releases", "releases.yml").delete_prefix("./")
         FileUtils.mkdir_p(File.dirname(target))

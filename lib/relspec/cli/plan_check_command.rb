@@ -1,7 +1,7 @@
 # frozen_string_literal: true
 
 require_relative "../plan"
-require_relative "../spec/library"
+require_relative "../release_spec/library"
 require_relative "../diff"
 
 module Relspec
@@ -44,7 +44,7 @@ module Relspec
       def spec_paths
         return @paths unless @paths.empty?
 
-        library = Spec::Library.new(SPECS)
+        library = ReleaseSpec::Library.new(SPECS)
         raise Error, "no #{SPECS}/ folder here: run from the project root or name the spec files" unless File.directory?(SPECS)
         raise Error, "#{SPECS}/ holds no <release>.yml file" if library.names.empty?
 

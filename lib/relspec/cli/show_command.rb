@@ -1,7 +1,7 @@
 # frozen_string_literal: true
 
 require "json"
-require_relative "../spec"
+require_relative "../release_spec"
 require_relative "annotated_yaml"
 
 module Relspec
@@ -18,7 +18,7 @@ module Relspec
       end
 
       def call
-        resolution = Spec.resolve(@path)
+        resolution = ReleaseSpec.resolve(@path)
         @err.puts(resolution.warnings.map(&:to_s)) unless resolution.warnings.empty?
         effective = resolution.effective
         @out.write(@format == "json" ? json(effective) : AnnotatedYaml.render(effective, origins: @origins))

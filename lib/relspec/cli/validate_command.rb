@@ -1,7 +1,7 @@
 # frozen_string_literal: true
 
 require "json"
-require_relative "../spec"
+require_relative "../release_spec"
 require_relative "friendly_errors"
 
 module Relspec
@@ -28,7 +28,7 @@ module Relspec
       private
 
       def default_paths
-        library = Spec::Library.new(DEFAULT_DIR)
+        library = ReleaseSpec::Library.new(DEFAULT_DIR)
         raise Error, "no #{DEFAULT_DIR}/ folder here: run from the project root or name the spec files" \
           unless File.directory?(DEFAULT_DIR)
         raise Error, "#{DEFAULT_DIR}/ holds no <release>.yml file" if library.names.empty?
@@ -39,8 +39,8 @@ module Relspec
       # One library per folder, so parents are read once however many of
       # their children are checked.
       def check(paths)
-        libraries = Hash.new { |hash, dir| hash[dir] = Spec::Library.new(dir) }
-        paths.flat_map { |path| Spec::Resolution.of(libraries[File.dirname(path)], path).diagnostics }
+        libraries = Hash.new { |hash, dir| hash[dir] = ReleaseSpec::Library.new(dir) }
+        paths.flat_map { |path| ReleaseSpec::Resolution.of(libraries[File.dirname(path)], path).diagnostics }
              .uniq(&:to_s).sort_by(&:sort_key)
       end
 

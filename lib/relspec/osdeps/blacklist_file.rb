@@ -1,7 +1,7 @@
 # frozen_string_literal: true
 
 require_relative "../yaml/located_document"
-require_relative "../spec/package_pattern"
+require_relative "../release_spec/package_pattern"
 require_relative "../diagnostic"
 require_relative "../error"
 
@@ -33,8 +33,8 @@ module Relspec
             problems << Diagnostic.error("wrong-type", "a blacklist entry must be a name or a pattern", location: location)
             next
           end
-          parsed = Spec::PackagePattern.parse(item)
-          if parsed.is_a?(Spec::PackagePattern::Invalid)
+          parsed = ReleaseSpec::PackagePattern.parse(item)
+          if parsed.is_a?(ReleaseSpec::PackagePattern::Invalid)
             problems << Diagnostic.error(parsed.rule, parsed.message, location: location, hint: parsed.hint)
             next
           end

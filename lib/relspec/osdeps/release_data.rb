@@ -1,7 +1,7 @@
 # frozen_string_literal: true
 
 require_relative "../yaml/located_document"
-require_relative "../spec/names"
+require_relative "../release_spec/names"
 require_relative "../diagnostic"
 require_relative "../error"
 
@@ -38,7 +38,7 @@ module Relspec
 
         parent = entry["depends_on"]
         return nil if parent.nil?
-        return parent if Spec::Names.release?(parent)
+        return parent if ReleaseSpec::Names.release?(parent)
 
         raise InvalidInput, [problem("release-name", "#{release} depends_on #{parent.inspect}, which is not a release name", path)]
       end

@@ -12,7 +12,7 @@ module Relspec
     module Renderer
       module_function
 
-      # +plan+: a ReleasePlan; +distributions+: codename => Spec::Distribution;
+      # +plan+: a ReleasePlan; +distributions+: codename => ReleaseSpec::Distribution;
       # +present+: optional filter (target, decision) → bool, to leave out
       # what a repository does not hold. Returns {arch => YAML text}.
       def render(plan, distributions, present: ->(_target, _decision) { true })

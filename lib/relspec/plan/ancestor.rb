@@ -20,14 +20,14 @@ module Relspec
     module Ancestors
       module_function
 
-      # +resolution+: the release's Spec::Resolution; +fetcher_options+ go to
+      # +resolution+: the release's ReleaseSpec::Resolution; +fetcher_options+ go to
       # every Apt::Fetcher (timeout), +cache+ is the Apt::Cache.
       def of(resolution, fetcher_options: {}, cache: Apt::Cache.new(nil))
         resolution.hierarchy.ancestors.map do |node|
           if node.external?
             external(node.source, fetcher_options, cache)
           else
-            declared(Spec::Resolution.new(resolution.hierarchy.library, node.source), fetcher_options, cache)
+            declared(ReleaseSpec::Resolution.new(resolution.hierarchy.library, node.source), fetcher_options, cache)
           end
         end
       end

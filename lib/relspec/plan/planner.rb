@@ -8,7 +8,7 @@ require_relative "../catalog/gem_resolution"
 require_relative "../apt/version"
 require_relative "../debian/naming"
 require_relative "../debian/package_version"
-require_relative "../spec/package_pattern"
+require_relative "../release_spec/package_pattern"
 require_relative "../diagnostic"
 require_relative "../error"
 
@@ -287,7 +287,7 @@ module Relspec
       # matches no package of the workspace is an error.
       def blacklist_patterns
         entries = (@effective["blacklist"] || []).each_with_index.map do |entry, index|
-          [Spec::PackagePattern.parse(entry["match"]), entry["reason"], index]
+          [ReleaseSpec::PackagePattern.parse(entry["match"]), entry["reason"], index]
         end
         unmatched = entries.reject { |pattern, _, _| @catalog.packages.keys.any? { |name| pattern.match?(name) } }
         unless unmatched.empty?

@@ -25,7 +25,7 @@ RSpec.describe "gem versions against the osdeps' constraints" do
     body = "release: rel\nworkspace: #{@workspace.root}\ntargets: { bookworm: [amd64] }\n" \
            "gems: { rice: \"#{version}\" }\ngem_source: #{@gems}\n"
     with_specs("rel" => body) do |dir|
-      return Relspec::Catalog::ReleaseCatalog.load(Relspec::Spec.resolve(File.join(dir, "rel.yml")))
+      return Relspec::Catalog::ReleaseCatalog.load(Relspec::ReleaseSpec.resolve(File.join(dir, "rel.yml")))
     end
   end
 

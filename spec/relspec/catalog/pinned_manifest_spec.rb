@@ -22,7 +22,7 @@ RSpec.describe "dependencies of a pinned package" do
 
   def os_apt(body)
     with_specs("rel" => "release: rel\nworkspace: #{@workspace.root}\ntargets: { bookworm: [amd64] }\n#{body}") do |dir|
-      catalog = Relspec::Catalog::ReleaseCatalog.load(Relspec::Spec.resolve(File.join(dir, "rel.yml")))
+      catalog = Relspec::Catalog::ReleaseCatalog.load(Relspec::ReleaseSpec.resolve(File.join(dir, "rel.yml")))
       return catalog.catalog.package("base/cmake").os_dependencies_for("bookworm").apt
     end
   end

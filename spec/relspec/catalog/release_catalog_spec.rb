@@ -17,7 +17,7 @@ RSpec.describe Relspec::Catalog::ReleaseCatalog do
 
   def release(body, workspace: @snapshot)
     with_specs("rel" => "release: rel\nworkspace: #{workspace}\ntargets: { bionic: [amd64], buster: [amd64] }\n#{body}") do |dir|
-      return described_class.load(Relspec::Spec.resolve(File.join(dir, "rel.yml")))
+      return described_class.load(Relspec::ReleaseSpec.resolve(File.join(dir, "rel.yml")))
     end
   end
 
@@ -116,7 +116,7 @@ RSpec.describe Relspec::Catalog::ReleaseCatalog do
 
   it "requires a workspace" do
     with_specs("rel" => "release: rel\ntargets: { bionic: [amd64] }\n") do |dir|
-      expect { described_class.load(Relspec::Spec.resolve(File.join(dir, "rel.yml"))) }
+      expect { described_class.load(Relspec::ReleaseSpec.resolve(File.join(dir, "rel.yml"))) }
         .to raise_error(Relspec::InvalidInput, /names no workspace/)
     end
   end

@@ -24,7 +24,7 @@ RSpec.describe "Ruby-version-specific osdeps" do
 
   it "are chosen per target distribution's Ruby" do
     with_specs("rel" => "release: rel\nworkspace: #{@workspace.root}\ntargets: { bionic: [amd64], bookworm: [amd64] }\n") do |dir|
-      catalog = Relspec::Catalog::ReleaseCatalog.load(Relspec::Spec.resolve(File.join(dir, "rel.yml"))).catalog
+      catalog = Relspec::Catalog::ReleaseCatalog.load(Relspec::ReleaseSpec.resolve(File.join(dir, "rel.yml"))).catalog
       utilrb = catalog.package("utilrb")
       expect(utilrb.os_dependencies_for("bionic").apt).to include("ruby2.5-dev")
       expect(utilrb.os_dependencies_for("bionic").apt).not_to include("ruby3.1-dev")

@@ -3,7 +3,7 @@
 require "spec_helper"
 require "relspec/debian/debian_dir"
 require "relspec/catalog/package"
-require "relspec/spec/distribution"
+require "relspec/release_spec/distribution"
 
 # debian/ for old distributions: the compat level of each distribution's
 # debhelper (docs/compile.md), declared the way that debhelper reads it, and
@@ -25,10 +25,10 @@ RSpec.describe "debian/ per debhelper compat level" do
   end
 
   it "takes each distribution's level from the table" do
-    levels = Relspec::Spec::Distributions::BUILTIN.transform_values(&:debhelper_compat)
+    levels = Relspec::ReleaseSpec::Distributions::BUILTIN.transform_values(&:debhelper_compat)
     expect(levels.values_at("xenial", "stretch", "bionic", "buster", "focal", "bullseye", "jammy", "bookworm", "noble"))
       .to eq([9, 10, 11, 12, 12, 13, 13, 13, 13])
-    own = Relspec::Spec::Distributions.with_overrides("focal" => { "debhelper_compat" => 11 })
+    own = Relspec::ReleaseSpec::Distributions.with_overrides("focal" => { "debhelper_compat" => 11 })
     expect(own.fetch("focal").debhelper_compat).to eq(11)
   end
 

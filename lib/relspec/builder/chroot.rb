@@ -1,0 +1,91 @@
+# frozen_string_literal: true
+
+require "fileutils"
+require_relative "../error"
+require_relative "../cache_dir"
+require_relative "../temporaries"
+
+module Relspec
+  module Builder
+    # The chroot tarball sbuild builds in, one per codename/arch, made once
+    # with `mmdebstrap --variant=buildd --mode=unshare` (plus debhelper) and kept in
+    # relspec's cache (<cache>/chroots/<codename>-<arch>.tar.zst) for every
+    # later build and release.
+    #
+    # The mirror is the spec's `distributions.<codename>.archive` (url, plus
+    # its components), else this machine's own apt sources when the codename
+    # is the host's (archive `host: true`, or no archive at all).
+    class Chroot
+      # Every package relspec emits build-depends on debhelper: in the
+      # tarball once, rather than installed again by every build.
+      INCLUDE = %w[debhelper].freeze
+      HOST_SOURCES = ["/etc/apt/sources.list", *Dir.glob("/etc/apt/sources.list.d/*.{list,sources}").sort].freeze
+
+      attr_reader :path
+
+      # +distribution+: ReleaseSpec::Distribution of the codename; +os_release+:
+      # the host's /etc/os-release (read to know the host's own codename).
+      def initialize(target, distribution, tool, cache_dir: CacheDir.for("chroots"), os_release: "/etc/os-release")
+        @target = target
+        @distribution = distribution
+        @tool = tool
+        raise BuildError, "no cache folder for chroot tarballs (set XDG_CACHE_HOME or HOME)" unless cache_dir
+
+        @path = File.join(cache_dir, "#{target.codename}-#{target.arch}.tar.zst")
+        @os_release = os_release
+      end
+
+      def exist?
+        File.file?(@path)
+      end
+
+      # Makes the tarball unless it exists; +log+ receives mmdebstrap's output.
+      # Returns true when one was made.
+      def ensure(log)
+        return false if exist?
+
+        mirrors = mirrors_or_raise
+        FileUtils.mkdir_p(File.dirname(@path))
+        # a killed mmdebstrap leaves hundreds of MB behind
+        Temporaries.sweep(File.dirname(@path))
+        partial = Temporaries.path(File.dirname(@path), File.basename(@path, ".tar.zst"), suffix: ".tar.zst")
+        begin
+          @tool.run("chroot #{@target}", ["mmdebstrap", "--variant=buildd", "--mode=unshare", "--arch=#{@target.arch}",
+                                          "--include=#{INCLUDE.join(',')}",
+                                          *components_option, @target.codename, partial, *mirrors], log: log)
+          File.rename(partial, @path)
+        ensure
+          FileUtils.rm_f(partial)
+        end
+        true
+      end
+
+      private
+
+      def archive
+        @distribution&.archive || {}
+      end
+
+      def components_option
+        components = archive["components"]
+        components && !archive["host"] ? ["--components=#{components.join(',')}"] : []
+      end
+
+      def mirrors_or_raise
+        return [archive["url"]] if archive["url"] && !archive["host"]
+
+        if host_codename == @target.codename
+          sources = HOST_SOURCES.select { |file| File.file?(file) && !File.read(file).strip.empty? }
+          return sources unless sources.empty?
+        end
+        raise BuildError, "cannot make the chroot for #{@target}: no mirror of #{@target.codename} " \
+                          "(set distributions.#{@target.codename}.archive.url in the spec; this machine's apt sources " \
+                          "are used only when the codename is the host's own, here #{host_codename || 'unknown'})"
+      end
+
+      def host_codename
+        File.file?(@os_release) ? File.read(@os_release)[/^VERSION_CODENAME=(\S+)/, 1] : nil
+      end
+    end
+  end
+end

@@ -1,0 +1,92 @@
+# frozen_string_literal: true
+
+require "fileutils"
+require "open3"
+require "tmpdir"
+require_relative "../error"
+require_relative "produced_files"
+
+module Relspec
+  module Builder
+    # Builds on this machine with dpkg-buildpackage, for development and
+    # quick tests: the build-dependencies are the packages installed here
+    # (relspec installs nothing). Each build unpacks the source into a fresh
+    # temporary folder.
+    #
+    # Build-dependencies that are packages of the release built earlier in
+    # the same run are not installed either: their .debs are unpacked
+    # (dpkg-deb -x) into a private folder whose /opt is laid over the real
+    # /opt (overlayfs, read-only) in a mount namespace of the build alone
+    # (`unshare --mount`, which needs root or user namespaces). Only files
+    # under /opt are visible that way, which is where Rock releases install.
+    # The packages of local repositories (the release's own and its
+    # ancestors', e.g. a parent release published on this machine) are made
+    # visible the same way.
+    class HostBackend
+      NAME = "host"
+      # What dpkg-checkbuilddeps prints before the relations it misses.
+      UNMET = /Unmet build dependencies: (.*)$/
+      # It separates those relations by spaces (not commas): "a (>= 1) b | c".
+      PACKAGE = /[^\s(|]+(?:\s*\([^)]*\))?/
+      RELATION = /#{PACKAGE}(?:\s*\|\s*#{PACKAGE})*/
+
+      def initialize(tool)
+        @tool = tool
+      end
+
+      def name
+        NAME
+      end
+
+      # Nothing to prepare: the machine is the build environment.
+      def prepare(_target, log: nil); end
+
+      def build(request)
+        Dir.mktmpdir("relspec-host-build") do |work|
+          tree = File.join(work, "source")
+          @tool.run(request.source, ["dpkg-source", "-x", request.dsc, tree], log: request.log)
+          local = check_build_dependencies(request, tree)
+          command = ["dpkg-buildpackage", "-us", "-uc", "-b", "-d"]
+          command = overlay(request, work, local) + command unless local.empty?
+          @tool.run(request.source, command, log: request.log, chdir: tree)
+          ProducedFiles.collect(work, request.output_dir)
+        end
+      end
+
+      private
+
+      # The build-dependencies missing on this machine, less the ones built
+      # in this run (returned: their .debs); any other missing one fails the
+      # build, named.
+      def check_build_dependencies(request, tree)
+        output, status = Open3.capture2e("dpkg-checkbuilddeps", chdir: tree)
+        File.open(request.log, "a") { |file| file.puts("$ dpkg-checkbuilddeps", output) }
+        return [] if status.success?
+
+        unmet = output[UNMET, 1] or
+          raise BuildError, "#{request.source}: dpkg-checkbuilddeps failed (exit status #{status.exitstatus}), " \
+                            "see #{request.log}"
+        local = (request.repositories.flat_map { |repository| repository.pool_debs(request.target) } +
+                 request.local_debs).to_h { |deb| [File.basename(deb).split("_").first, deb] }
+        relations = unmet.scan(RELATION)
+        missing = relations.reject { |relation| relation.split(/\s*\|\s*/).any? { |alt| local[alt[/\A[^\s(:]+/]] } }
+        unless missing.empty?
+          raise BuildError, "#{request.source}: build-dependencies missing on this machine: #{missing.join(', ')} " \
+                            "(relspec looked at the packages installed here, as dpkg-checkbuilddeps does; install " \
+                            "them, or build with --backend sbuild), see #{request.log}"
+        end
+        relations.flat_map { |relation| relation.split(/\s*\|\s*/) }
+             .filter_map { |alt| local[alt[/\A[^\s(:]+/]] }.uniq
+      end
+
+      # The command prefix that runs a build with +debs+ visible under /opt.
+      def overlay(request, work, debs)
+        root = File.join(work, "local-root")
+        FileUtils.mkdir_p(File.join(root, "opt"))
+        debs.each { |deb| @tool.run(request.source, ["dpkg-deb", "-x", deb, root], log: request.log) }
+        ["unshare", "--mount", "--propagation", "private", "sh", "-c",
+         'mount -t overlay relspec-build -o "lowerdir=$0/opt:/opt" /opt && exec "$@"', root]
+      end
+    end
+  end
+end

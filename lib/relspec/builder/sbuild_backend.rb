@@ -1,0 +1,81 @@
+# frozen_string_literal: true
+
+require "fileutils"
+require "tmpdir"
+require_relative "chroot"
+require_relative "../error"
+require_relative "produced_files"
+
+module Relspec
+  module Builder
+    # Builds in a clean chroot with sbuild in unshare mode (no root inside,
+    # nothing on this machine changes), on the chroot tarball of the target
+    # (Chroot). Build-dependencies come from the distribution (the chroot's
+    # sources), the release's own and ancestors' repositories, and the .debs
+    # built earlier in this run (--extra-package).
+    #
+    # A repository reachable over http(s) is an --extra-repository, with its
+    # key (--extra-repository-key) when signed and `[trusted=yes]` only when
+    # the spec says `trusted: true`. The unshare chroot cannot see this
+    # machine's folders, so a local repository's .debs of the target are
+    # handed over as --extra-package instead (relspec read and checked that
+    # repository when it planned the release).
+    class SbuildBackend
+      NAME = "sbuild"
+
+      # +distributions+: codename => ReleaseSpec::Distribution; +chroot_cache+: the
+      # folder of chroot tarballs (default: relspec's cache).
+      def initialize(tool, distributions, chroot_cache: nil)
+        @tool = tool
+        @distributions = distributions
+        @chroot_cache = chroot_cache
+        @chroots = {}
+      end
+
+      def name
+        NAME
+      end
+
+      # Makes the target's chroot tarball unless it exists; true if it did.
+      def prepare(target, log:)
+        chroot(target).ensure(log)
+      end
+
+      def build(request)
+        prepare(request.target, log: request.log)
+        Dir.mktmpdir("relspec-sbuild") do |work|
+          command = ["sbuild", "--chroot-mode=unshare", "--chroot=#{chroot(request.target).path}",
+                     "--dist=#{request.target.codename}", "--arch=#{request.target.arch}", "--arch-all", "--no-source",
+                     "--no-run-lintian", "--no-run-piuparts", "--no-run-autopkgtest", "--no-apt-upgrade",
+                     "--no-apt-distupgrade", "--nolog", "--build-dir=#{work}",
+                     *repository_options(request), *request.local_debs.map { |deb| "--extra-package=#{deb}" },
+                     request.dsc]
+          @tool.run(request.source, command, log: request.log, chdir: work)
+          ProducedFiles.collect(work, request.output_dir)
+        end
+      end
+
+      private
+
+      def chroot(target)
+        @chroots[target.to_s] ||= Chroot.new(target, @distributions[target.codename], @tool,
+                                             **(@chroot_cache ? { cache_dir: @chroot_cache } : {}))
+      end
+
+      def repository_options(request)
+        request.repositories.flat_map do |repository|
+          next local_packages(repository, request.target) if repository.local?
+
+          options = repository.trusted ? ["[trusted=yes]"] : []
+          line = ["deb", *options, repository.uri, repository.suite, *repository.components].join(" ")
+          ["--extra-repository=#{line}", *(repository.keyring ? ["--extra-repository-key=#{repository.keyring}"] : [])]
+        end
+      end
+
+      # The .debs a local repository holds for the target (apt picks by version).
+      def local_packages(repository, target)
+        repository.pool_debs(target).map { |deb| "--extra-package=#{deb}" }
+      end
+    end
+  end
+end

@@ -1,0 +1,19 @@
+# frozen_string_literal: true
+
+require_relative "release_spec/library"
+require_relative "release_spec/resolution"
+require_relative "error"
+
+module Relspec
+  # Release specs: reading, checking and inheriting them (DESIGN §4).
+  module ReleaseSpec
+    # The effective spec of the release in +path+, whose parents are looked
+    # up beside it; raises InvalidInput with every error found.
+    def self.resolve(path)
+      resolution = Resolution.of(Library.new(File.dirname(path)), path)
+      raise InvalidInput, resolution.errors unless resolution.ok?
+
+      resolution
+    end
+  end
+end

@@ -1,0 +1,80 @@
+# frozen_string_literal: true
+
+module Relspec
+  module ReleaseSpec
+    # A target distribution as autoproj's osdeps name it: a type (ubuntu
+    # inherits Debian's package names, so it is keyed "ubuntu,debian") and the
+    # labels autoproj matches against the running system.
+    # +archive+: where the distribution's own packages can be read (a
+    # repository entry with components), or nil. +debhelper_compat+: the
+    # debhelper compatibility level generated debian/ folders use there (the
+    # highest its debhelper supports; docs/compile.md lists the sources).
+    # +ruby+: the "major.minor" of the distribution's Ruby (autoproj loads
+    # `.osdeps-ruby<major><minor>` files for it), or nil when unknown.
+    Distribution = Struct.new(:codename, :type, :labels, :archive, :debhelper_compat, :ruby, keyword_init: true) do
+      def self.define(codename, type, labels, archive: nil, debhelper_compat: DEFAULT_DEBHELPER_COMPAT, ruby: nil)
+        new(codename: codename, type: type, labels: labels.map(&:to_s).freeze, archive: archive&.freeze,
+            debhelper_compat: debhelper_compat, ruby: ruby).freeze
+      end
+
+      # autoproj's keyword for the distribution's Ruby ("ruby31"), or nil.
+      def ruby_version_keyword
+        ruby && "ruby#{ruby.delete('.')}"
+      end
+
+      def osdeps_type_key
+        type == "ubuntu" ? "ubuntu,debian" : "debian"
+      end
+
+      # The labels an osdeps entry is keyed by. "default" is left out: autoproj
+      # adds "default" to every system's versions, so an entry keyed with it
+      # would also resolve on distributions the release does not target, and
+      # on Debian both the "ubuntu,debian" and the "debian" entry would match,
+      # giving two names when a package differs between the two.
+      def osdeps_labels_key
+        (labels - ["default"]).join(",")
+      end
+    end
+
+    # Distributions relspec does not know get the compat level of current
+    # debhelper unless their definition says otherwise.
+    DEFAULT_DEBHELPER_COMPAT = 13
+
+    # The distributions Rock releases have targeted; specs may add or override
+    # entries with `distributions:`.
+    module Distributions
+      TYPES = %w[ubuntu debian].freeze
+
+      # debhelper of each distribution (docs/compile.md): xenial 9.20160115,
+      # stretch 10.2.5, bionic 11.1.6, buster 12.1.1, focal 12.10,
+      # bullseye 13.3.4, jammy 13.6, bookworm 13.11.4, noble 13.14.1. Their
+      # Ruby (the ruby package's default): xenial 2.3, stretch 2.3, bionic
+      # 2.5, buster 2.5, focal 2.7, bullseye 2.7, jammy 3.0, bookworm 3.1,
+      # noble 3.2.
+      BUILTIN = [
+        Distribution.define("xenial", "ubuntu", %w[16.04 xenial xerus default], debhelper_compat: 9, ruby: "2.3"),
+        Distribution.define("bionic", "ubuntu", %w[18.04 bionic beaver default], debhelper_compat: 11, ruby: "2.5"),
+        Distribution.define("focal", "ubuntu", %w[20.04 focal fossa default], debhelper_compat: 12, ruby: "2.7"),
+        Distribution.define("jammy", "ubuntu", %w[22.04 jammy jellyfish default], debhelper_compat: 13, ruby: "3.0"),
+        Distribution.define("noble", "ubuntu", %w[24.04 noble numbat default], debhelper_compat: 13, ruby: "3.2"),
+        Distribution.define("stretch", "debian", %w[9 stretch default], debhelper_compat: 10, ruby: "2.3"),
+        Distribution.define("buster", "debian", %w[10 buster default], debhelper_compat: 12, ruby: "2.5"),
+        Distribution.define("bullseye", "debian", %w[11 bullseye default], debhelper_compat: 13, ruby: "2.7"),
+        Distribution.define("bookworm", "debian", %w[12 bookworm default], debhelper_compat: 13, ruby: "3.1")
+      ].to_h { |d| [d.codename, d] }.freeze
+
+      # Built-ins overlaid with a spec's own definitions ({codename =>
+      # {"type", "labels", "archive"}}); a built-in keeps what an override leaves out.
+      def self.with_overrides(definitions)
+        own = (definitions || {}).to_h do |codename, definition|
+          known = BUILTIN[codename]
+          [codename, Distribution.define(codename, definition["type"] || known&.type,
+                                         definition["labels"] || known&.labels || [], archive: definition["archive"],
+                                         debhelper_compat: definition["debhelper_compat"] || known&.debhelper_compat ||
+                                                           DEFAULT_DEBHELPER_COMPAT, ruby: known&.ruby)]
+        end
+        BUILTIN.merge(own).freeze
+      end
+    end
+  end
+end

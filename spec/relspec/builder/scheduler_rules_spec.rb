@@ -1,0 +1,56 @@
+# frozen_string_literal: true
+
+require "spec_helper"
+require "relspec/builder/scheduler"
+
+# The scheduler's rules on plain entries (it knows nothing of Debian; the
+# block is the build). Real builds go through it in scheduler_spec.rb.
+RSpec.describe Relspec::Builder::Scheduler do
+  SCHEDULER_ENTRY = Struct.new(:source, :build_depends)
+
+  def entries(graph)
+    graph.map { |source, deps| SCHEDULER_ENTRY.new(source, deps) }
+  end
+
+  it "never runs more than --jobs builds at once, and uses them" do
+    running = 0
+    peak = 0
+    lock = Mutex.new
+    outcomes = described_class.new(entries("a" => [], "b" => [], "c" => [], "d" => []), jobs: 2).run do
+      lock.synchronize { peak = [peak, running += 1].max }
+      sleep 0.3
+      lock.synchronize { running -= 1 }
+      :files
+    end
+    expect(outcomes.map(&:status)).to eq(%i[built built built built])
+    expect(peak).to eq(2)
+  end
+
+  it "without --keep-going starts nothing after a failure and says so" do
+    graph = { "bad" => [], "later" => [], "user" => ["bad"] }
+    started = []
+    outcomes = described_class.new(entries(graph), jobs: 1).run do |entry|
+      started << entry.source
+      raise Relspec::BuildError, "bad: dpkg-buildpackage failed" if entry.source == "bad"
+    end
+    expect(started).to eq(["bad"])
+    expect(outcomes.to_h { |outcome| [outcome.entry.source, [outcome.status, outcome.reason]] }).to eq(
+      "bad" => [:failed, "bad: dpkg-buildpackage failed"],
+      "user" => [:skipped, "build-dependency bad failed"],
+      "later" => [:skipped, "not started: the run stopped after bad failed (--keep-going builds the rest)"]
+    )
+  end
+
+  it "skips what an earlier run built and still builds a dependency cycle" do
+    started = []
+    described_class.new(entries("done" => [], "x" => %w[y done], "y" => ["x"]), jobs: 2, done: ["done"]).run do |entry|
+      started << entry.source
+    end
+    expect(started).to eq(%w[x y])
+  end
+
+  it "raises a bug in a build in the calling thread" do
+    expect { described_class.new(entries("a" => []), jobs: 1).run { raise ArgumentError, "bug" } }
+      .to raise_error(ArgumentError, "bug")
+  end
+end
