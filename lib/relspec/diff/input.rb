@@ -31,7 +31,7 @@ module Relspec
 
       def release_folder(path)
         lock = File.join(path, LOCK_FILE)
-        raise Error, "#{path} is not a release folder: it has no #{LOCK_FILE}" unless File.file?(lock)
+        raise Error, "#{path} is not a release folder: it has no #{LOCK_FILE}" unless File.exist?(lock)
 
         # No spec is attached: which spec the lock was planned from is not
         # known (the one in specs/ may be the changed one).
