@@ -6,6 +6,7 @@ require_relative "error"
 require_relative "builder/build_plan"
 require_relative "builder/build_results"
 require_relative "builder/request"
+require_relative "builder/target_lock"
 require_relative "builder/repositories"
 require_relative "builder/scheduler"
 require_relative "builder/tool"
@@ -59,11 +60,13 @@ module Relspec
         selected_targets.map do |target|
           dir = File.expand_path(File.join(@out, @effective.release, "#{target.codename}-#{target.arch}"))
           plan = BuildPlan.read(dir)
-          FileUtils.mkdir_p(File.join(dir, "logs"))
-          prepared = backend.prepare(target, log: File.join(dir, "logs", "prepare.log"))
-          next TargetReport.new(target: target, dir: dir, outcomes: [], reused: 0, prepared: prepared) if @prepare_only
+          TargetLock.hold(dir, "build") do
+            FileUtils.mkdir_p(File.join(dir, "logs"))
+            prepared = backend.prepare(target, log: File.join(dir, "logs", "prepare.log"))
+            next TargetReport.new(target: target, dir: dir, outcomes: [], reused: 0, prepared: prepared) if @prepare_only
 
-          build_target(target, dir, plan, backend, Repositories.of(resolution, target.codename), prepared)
+            build_target(target, dir, plan, backend, Repositories.of(resolution, target.codename), prepared)
+          end
         end
       rescue Interrupt
         @tool.stop_all

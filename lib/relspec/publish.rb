@@ -8,6 +8,7 @@ require_relative "diagnostic"
 require_relative "osdeps/renderer"
 require_relative "osdeps/repository_presence"
 require_relative "builder/build_results"
+require_relative "builder/target_lock"
 require_relative "publish/repository_config"
 require_relative "publish/repository_lock"
 require_relative "publish/upload"
@@ -36,7 +37,28 @@ module Relspec
       repository = repository_path(resolution)
       all = Plan::Target.all(effective)
       selected = Plan::Target.select(target, all, effective.release)
-      results = selected.to_h { |one| [one, read_results(out, effective.release, one, explicit: !target.nil?)] }
+      # No build of these targets runs while their results are read and included.
+      holding(built_folders(out, effective.release, selected)) do
+        include_and_render(path, out, effective, repository, all, selected, timeout: timeout, waiting: waiting,
+                                                                            explicit: !target.nil?)
+      end
+    end
+
+    # The folders of +targets+ that a build wrote into.
+    def self.built_folders(out, release, targets)
+      targets.map { |one| File.dirname(Builder::BuildResults.path(out, release, one)) }.select { |dir| File.directory?(dir) }
+    end
+
+    # Holds the target lock of each of +folders+, then yields.
+    def self.holding(folders, &block)
+      return yield if folders.empty?
+
+      Builder::TargetLock.hold(folders.first, "publish") { holding(folders.drop(1), &block) }
+    end
+
+    # +explicit+: the user named the target (unbuilt is then an error).
+    def self.include_and_render(path, out, effective, repository, all, selected, timeout:, waiting:, explicit:)
+      results = selected.to_h { |one| [one, read_results(out, effective.release, one, explicit: explicit)] }
       raise PublishError, "nothing to publish: no target of #{effective.release} has a build-results.yml under " \
                           "#{File.join(out, effective.release)} (run relspec build first)" if results.values.none?
 
