@@ -6,6 +6,7 @@ require_relative "debian/source_package"
 require_relative "debian/naming"
 require_relative "osdeps/renderer"
 require_relative "yaml/writer"
+require_relative "builder/build_plan"
 require_relative "atomic_file"
 require_relative "temporaries"
 
@@ -174,14 +175,13 @@ module Relspec
         built = builds.to_h { |decision| [decision.package, decision] }
         entries = builds.map do |decision|
           needs = @catalog.package(decision.package).build_dependencies.filter_map { |dep| built[dep]&.deb_name }
-          { "package" => decision.package, "source" => decision.deb_name, "version" => decision.version.to_s,
-            "dsc" => "#{decision.deb_name}/#{Debian::Naming.dsc(decision.deb_name, decision.version)}",
-            "build_depends" => needs }
+          Builder::BuildPlan::Entry.new(package: decision.package, source: decision.deb_name,
+                                        version: decision.version.to_s, build_depends: needs,
+                                        dsc: "#{decision.deb_name}/#{Debian::Naming.dsc(decision.deb_name, decision.version)}")
         end
         dir = File.join(@out, @effective.release, "#{target.codename}-#{target.arch}")
         FileUtils.mkdir_p(dir)
-        AtomicFile.update(File.join(dir, "plan.yml"),
-                         Yaml::Writer.dump("release" => plan.release, "target" => target.to_s, "builds" => entries))
+        Builder::BuildPlan.write(dir, release: plan.release, target: target, entries: entries)
       end
     end
 
