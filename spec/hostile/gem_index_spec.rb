@@ -1,7 +1,7 @@
 # frozen_string_literal: true
 
 require "spec_helper"
-require "webrick"
+require_relative "../support/fixed_answer_server"
 
 # A gem_source server on 127.0.0.1 whose compact index (/info/<name>) is not
 # one (issue 24, item 2): `relspec plan` of a release with a gem osdep says
@@ -18,11 +18,8 @@ RSpec.describe "relspec plan against a gem_source answering nonsense" do
     builder.create
     AptRepositoryBuilder.new(File.join(@dir, "repos", "debian"), codenames: ["bookworm"], architectures: ["amd64"])
                         .add("ruby-baz", "1.2.0-1", codename: "bookworm", arch: "amd64")
-    @body = +""
-    @server = WEBrick::HTTPServer.new(BindAddress: "127.0.0.1", Port: 0, Logger: WEBrick::Log.new(File::NULL), AccessLog: [])
-    @server.mount_proc("/info/foo") { |_request, response| response.body = @body }
-    @thread = Thread.new { @server.start }
-    @url = "http://127.0.0.1:#{@server.config[:Port]}"
+    @server = FixedAnswerServer.new(content_type: "text/plain")
+    @url = @server.url
     FileUtils.mkdir_p(File.join(@dir, "specs"))
     File.write(File.join(@dir, "specs", "g.yml"),
                "release: g\nworkspace: ../ws/workspace\ntargets: { bookworm: [amd64] }\nmaintainer: Demo <demo@example.org>\n" \
@@ -30,8 +27,7 @@ RSpec.describe "relspec plan against a gem_source answering nonsense" do
   end
 
   after(:all) do
-    @server.shutdown
-    @thread.join(5)
+    @server.stop
     FileUtils.rm_rf(@dir)
   end
 
@@ -40,7 +36,7 @@ RSpec.describe "relspec plan against a gem_source answering nonsense" do
     "a truncated index" => ["---\n1.0.0 |checksum:aa\n1.1", ':3: not a compact index line ("VERSION DEPENDENCIES|checksum:SHA256"): "1.1"']
   }.each do |what, (body, message)|
     it "names the URL and line of #{what}" do
-      @body.replace(body)
+      @server.body = body
       run = relspec("plan", "specs/g.yml", chdir: @dir)
       expect([run.exit_code, run.stdout]).to eq([1, ""]), run.stdout + run.stderr
       expect(run.stderr).to include("#{@url}/info/foo#{message}")
