@@ -120,31 +120,33 @@ RSpec.describe "relspec build and publish under concurrency and faults", order: 
     results = File.join(@release.target_dir, "build-results.yml")
     plan = File.join(@release.target_dir, "plan.yml")
     pristine = File.read(results)
+    text = File.read(plan)
     first_files = /^    files:\n(    [- ] .*\n)+/ # the first package's (rock-conc-base-a1) list
+    line = pristine.lines.index("    files:\n") + 1
     {
-      "    files: 7\n" => "packages.#{@release.source('base/a1')}.files must be a list of files",
-      "    files:\n" => "a built package lists the files it produced",
-      "    files:\n    - [a, b]\n" => "packages.#{@release.source('base/a1')}.files.0 must be a mapping of name, sha256 and size"
-    }.each do |damage, message|
+      "    files: 7\n" => [line, "packages.#{@release.source('base/a1')}.files must be a list of files"],
+      "    files:\n" => [line, "a built package lists the files it produced"],
+      "    files:\n    - [a, b]\n" => [line + 1, "packages.#{@release.source('base/a1')}.files.0 must be a mapping of name, sha256 and size"]
+    }.each do |damage, (at, message)|
       damaged = pristine.sub(first_files, damage)
       expect(damaged).not_to eq(pristine)
       File.write(results, damaged)
-      line = pristine.lines.index("    files:\n") + 1
       %w[build publish].each do |command|
         run = relspec(command, spec, "--out", "out", *(command == "build" ? %w[--backend host] : []), chdir: @dir)
         expect([run.exit_code, run.stdout]).to eq([1, ""]), run.stderr
-        expect(run.stderr).to start_with("out/conc/bookworm-amd64/build-results.yml:#{line}:")
+        expect(run.stderr).to start_with("out/conc/bookworm-amd64/build-results.yml:#{at}:")
           .and(include("error[build-results]: cannot read the build results: #{message}"))
       end
       expect(File.exist?(repository)).to be(false)
     end
     File.write(results, pristine)
-    text = File.read(plan)
     File.write(plan, text.sub(/dsc: \S+/, "dsc: /etc/passwd"))
     run = relspec("build", spec, "--out", "out", "--backend", "host", chdir: @dir)
     expect([run.exit_code, run.stderr]).to match([1, %r{\Aout/conc/bookworm-amd64/plan.yml:\d+:\d+: error\[build-plan\]: cannot read the build plan: builds\.0\.dsc "/etc/passwd" is not a plain path}])
-    File.write(plan, text)
     expect(File.read(results)).to eq(pristine)
+  ensure
+    File.write(results, pristine)
+    File.write(plan, text)
   end
 
   it "keeps the repository consistent when the disk fills during publish, and completes once there is space" do
