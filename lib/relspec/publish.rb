@@ -49,11 +49,12 @@ module Relspec
       targets.map { |one| File.dirname(Builder::BuildResults.path(out, release, one)) }.select { |dir| File.directory?(dir) }
     end
 
-    # Holds the target lock of each of +folders+, then yields.
+    # Holds the target lock of each of +folders+ (shared with other
+    # publishers, never with a build), then yields.
     def self.holding(folders, &block)
       return yield if folders.empty?
 
-      Builder::TargetLock.hold(folders.first, "publish") { holding(folders.drop(1), &block) }
+      Builder::TargetLock.hold(folders.first, "publish", shared: true) { holding(folders.drop(1), &block) }
     end
 
     # +explicit+: the user named the target (unbuilt is then an error).

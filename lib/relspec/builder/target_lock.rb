@@ -13,8 +13,10 @@ module Relspec
     # same target would build every package again and both would claim
     # them; a publish during a build could read results whose files the
     # build is replacing. So the second one refuses at once, naming the
-    # holder (from /proc/locks). An exclusive flock: the kernel drops it
-    # when the holder dies, so a killed run never leaves a stale lock.
+    # holder (from /proc/locks). Publishes share the lock with each other
+    # (the repository lock makes the second one wait). A flock: the kernel
+    # drops it when the holder dies, so a killed run never leaves a stale
+    # lock.
     class TargetLock
       FILE_NAME = ".relspec-target.lock"
 
@@ -23,11 +25,13 @@ module Relspec
 
       # Yields while this process holds +dir+'s lock; +doing+ says what for
       # ("build", "publish") in the refusal the other process gets.
-      def self.hold(dir, doing)
+      # +shared+: publishers share it (the repository lock orders them),
+      # a build holds it alone.
+      def self.hold(dir, doing, shared: false)
         FileUtils.mkdir_p(dir)
         file = File.open(File.join(dir, FILE_NAME), File::RDWR | File::CREAT, 0o644)
         begin
-          unless file.flock(File::LOCK_EX | File::LOCK_NB)
+          unless file.flock((shared ? File::LOCK_SH : File::LOCK_EX) | File::LOCK_NB)
             raise Busy, "cannot #{doing} #{DisplayPath.of(dir)}: #{holder(file)} is using it; run again when it has finished"
           end
 
