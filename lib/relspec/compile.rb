@@ -65,7 +65,7 @@ module Relspec
     private
 
     def require_maintainer
-      return if @effective["maintainer"]
+      return if @effective.maintainer
 
       raise InvalidInput, [Diagnostic.error("missing-maintainer", "release #{@effective.release} names no maintainer",
                                             location: @planned.resolution.spec_file.location(["release"]),

@@ -120,14 +120,11 @@ module Relspec
     end
 
     def self.read_own(resolution, targets, fetcher_options, cache)
-      entry = resolution.effective["repository"]
+      entry = resolution.effective.repository
       return OwnRepository.read(nil, targets) unless entry
 
       spec_file = resolution.spec_file
-      # The release publishes into its path: a path that does not exist yet
-      # is an empty repository, never a reason to ask the URL.
-      entry = entry.except("url") if entry["path"]
-      repository = Ancestors.reader(entry, File.dirname(spec_file.path), fetcher_options, cache)
+      repository = Ancestors.reader(entry, entry.own_location, fetcher_options, cache)
       OwnRepository.read(repository, targets)
     rescue Apt::Repository::Error => e
       raise InvalidInput, [Diagnostic.error("own-repository", "the repository of #{resolution.effective.release}: #{e.message}",

@@ -41,7 +41,7 @@ module Relspec
                           "#{File.join(out, effective.release)} (run relspec build first)" if results.values.none?
 
       uploads = results.to_h { |one, read| [one, read ? read.built.map { |entry| Upload.of(entry, File.dirname(read.path), read.path) } : []] }
-      sign_with = effective["repository"]["sign_with"]
+      sign_with = effective.repository.sign_with
       SigningKey.check(sign_with) if sign_with
       config = RepositoryConfig.new(release: effective.release, targets: all, sign_with: sign_with)
       RepositoryLock.hold(repository, waiting: waiting) do
@@ -53,8 +53,8 @@ module Relspec
     end
 
     def self.repository_path(resolution)
-      entry = resolution.effective["repository"]
-      return File.expand_path(entry["path"], File.dirname(resolution.spec_file.path)) if entry.is_a?(Hash) && entry["path"]
+      entry = resolution.effective.repository
+      return entry.path if entry&.path
 
       location = entry ? resolution.spec_file.key_location(["repository"]) : resolution.spec_file.location(["release"])
       raise InvalidInput, [Diagnostic.error("publish-repository",

@@ -16,7 +16,7 @@ module Relspec
       # release URLs share).
       def render(releases, repo_url: nil, public_key: nil)
         repo_url ||= common_base(releases)
-        separate = majority(releases.map { |spec| spec["separate_prefixes"] != false })
+        separate = majority(releases.map { |spec| spec.prefixes.separate_prefixes })
         index = { "default" => { "repo_url" => repo_url, "public_key" => public_key,
                                  "separate_prefixes" => separate }.compact }
         releases.sort_by(&:release).each do |spec|
@@ -27,16 +27,16 @@ module Relspec
 
       def entry(spec, repo_url, separate)
         entry = {}
-        parent = Array(spec["parent"]).first
+        parent = spec.parents.first
         entry["depends_on"] = parent if parent
-        entry["separate_prefixes"] = spec["separate_prefixes"] != false if (spec["separate_prefixes"] != false) != separate
+        entry["separate_prefixes"] = spec.prefixes.separate_prefixes if spec.prefixes.separate_prefixes != separate
         url = release_url(spec)
         entry["repo_url"] = File.dirname(url) if url && repo_url && File.dirname(url) != repo_url
         entry.empty? ? nil : entry
       end
 
       def release_url(spec)
-        spec["repository"]&.fetch("url", nil)&.chomp("/")
+        spec.repository&.url&.chomp("/")
       end
 
       def common_base(releases)

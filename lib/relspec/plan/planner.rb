@@ -144,10 +144,11 @@ module Relspec
       end
 
       def pin_cause(package, providers)
-        pin = (@effective["pins"] || {})[package.name]
+        pin = @effective.pins[package.name]
         return nil unless pin
 
-        ref, value = pin.first
+        ref = pin.ref
+        value = pin.value
         label = ref == "commit" ? nil : "#{ref} #{value}"
         ours = upstream(package)
         nearest = providers.first
@@ -204,7 +205,7 @@ module Relspec
       end
 
       def built(package, target, cause)
-        deb = deb_name(package, @effective["package_prefix"], @effective.release)
+        deb = deb_name(package, @effective.prefixes.package_prefix, @effective.release)
         unless upstream(package)
           raise InvalidInput, [Diagnostic.error("unknown-commit-time",
                                                 "cannot version #{package.name}: the time of its commit is unknown",
@@ -286,9 +287,7 @@ module Relspec
       # [pattern, reason, index] for each blacklist entry; an entry that
       # matches no package of the workspace is an error.
       def blacklist_patterns
-        entries = (@effective["blacklist"] || []).each_with_index.map do |entry, index|
-          [ReleaseSpec::PackagePattern.parse(entry["match"]), entry["reason"], index]
-        end
+        entries = @effective.blacklist.map { |entry| [entry.pattern, entry.reason, entry.index] }
         unmatched = entries.reject { |pattern, _, _| @catalog.packages.keys.any? { |name| pattern.match?(name) } }
         unless unmatched.empty?
           raise InvalidInput, unmatched.map { |pattern, _, index|

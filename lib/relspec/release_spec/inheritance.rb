@@ -2,6 +2,7 @@
 
 require_relative "effective_spec"
 require_relative "origin"
+require_relative "defaults"
 
 module Relspec
   module ReleaseSpec
@@ -19,10 +20,6 @@ module Relspec
                    gem_source].freeze
       # Keys an external release may set for its descendants.
       EXTERNAL_KEYS = %w[targets install_prefix separate_prefixes package_prefix].freeze
-      DEFAULTS = {
-        "install_prefix" => "/opt/rock", "separate_prefixes" => true, "package_prefix" => "rock",
-        "gems" => {}, "distributions" => {}, "gem_source" => "https://rubygems.org"
-      }.freeze
 
       # The value was written but is broken: checks that depend on it stay quiet.
       BROKEN = Object.new.freeze
