@@ -4,7 +4,7 @@ require "fileutils"
 require_relative "release_spec"
 require_relative "error"
 require_relative "builder/build_plan"
-require_relative "builder/results"
+require_relative "builder/build_results"
 require_relative "builder/request"
 require_relative "builder/repositories"
 require_relative "builder/scheduler"
@@ -15,7 +15,7 @@ require_relative "builder/sbuild_backend"
 module Relspec
   # `relspec build`: builds the source packages `relspec compile` wrote,
   # per target in the order of its plan.yml, with one backend, and records
-  # every package's outcome in <target folder>/build-results.yml (Results).
+  # every package's outcome in <target folder>/build-results.yml (BuildResults).
   # Built files go to <target folder>/results/<source>/, logs to
   # <target folder>/logs/<source>.log. docs/build.md describes it.
   module Builder
@@ -91,9 +91,8 @@ module Relspec
       end
 
       def build_target(target, dir, plan, backend, repositories, prepared)
-        results = Results.read(dir)
-        current = plan.entries.to_h { |entry| [entry.source, true] }
-        results.records.select! { |source, _| current[source] } # what compile no longer plans is not a result
+        results = BuildResults.load(dir, release: @effective.release, target: target)
+        results.keep_only(plan.entries.map(&:source))
         # A package built by another backend (a host build after sbuild ones)
         # is not what this run would build: built again.
         reuse = !@rebuild && results.backend == backend.name
@@ -105,7 +104,7 @@ module Relspec
           on_start: ->(entry) { @listener&.building(entry) },
           on_done: lambda do |outcome|
             record(results, dir, outcome)
-            results.write(release: @effective.release, target: target.to_s, backend: backend.name)
+            results.write(backend: backend.name)
             @listener&.finished(outcome)
           end
         ) do |entry|
@@ -114,7 +113,7 @@ module Relspec
           local.synchronize { debs.concat(files.grep(/\.u?deb\z/)) }
           files
         end
-        results.write(release: @effective.release, target: target.to_s, backend: backend.name) if outcomes.empty?
+        results.write(backend: backend.name) if outcomes.empty?
         TargetReport.new(target: target, dir: dir, results: results, outcomes: outcomes, reused: done.size,
                          prepared: prepared)
       end
@@ -131,18 +130,16 @@ module Relspec
       def record(results, dir, outcome)
         entry = outcome.entry
         started = outcome.status != :skipped
-        files = outcome.status == :built ? outcome.value.map { |file| Results.file_entry(dir, relative(dir, file)) } : nil
-        results.record(entry.source, Results::Record.new(
-                                       package: entry.package, version: entry.version, status: outcome.status.to_s,
-                                       duration: started ? outcome.duration : nil,
-                                       log: started ? "logs/#{entry.source}.log" : nil,
-                                       reason: outcome.reason&.gsub("#{dir}/", ""),
-                                       files: files
-                                     ))
+        files = outcome.status == :built ? outcome.value.map { |file| BuildResults::Produced.of(dir, relative(dir, file)) } : []
+        results.record(BuildResults::Record.new(
+                         source: entry.source, package: entry.package, version: entry.version, status: outcome.status.to_s,
+                         duration: started ? outcome.duration : nil, log: started ? "logs/#{entry.source}.log" : nil,
+                         reason: outcome.reason&.gsub("#{dir}/", ""), files: files.freeze
+                       ))
       end
 
       def debs_of(dir, record)
-        record.files.map { |file| File.join(dir, file["name"]) }.grep(/\.u?deb\z/)
+        record.files.map { |file| File.join(dir, file.name) }.grep(/\.u?deb\z/)
       end
 
       def relative(dir, file)

@@ -7,7 +7,7 @@ require_relative "atomic_file"
 require_relative "diagnostic"
 require_relative "osdeps/renderer"
 require_relative "osdeps/repository_presence"
-require_relative "publish/build_results"
+require_relative "builder/build_results"
 require_relative "publish/repository_config"
 require_relative "publish/repository_lock"
 require_relative "publish/upload"
@@ -65,8 +65,8 @@ module Relspec
     # The target's results, nil when it has none (an error when the user
     # asked for that target).
     def self.read_results(out, release, target, explicit:)
-      path = BuildResults.path(out, release, target)
-      return BuildResults.read(path, release: release, target: target) if File.exist?(path)
+      path = Builder::BuildResults.path(out, release, target)
+      return Builder::BuildResults.read(path, release: release, target: target) if File.exist?(path)
       raise PublishError, "#{target} of #{release} has not been built: #{path} does not exist (run relspec build)" if explicit
 
       nil

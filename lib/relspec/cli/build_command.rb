@@ -39,8 +39,8 @@ module Relspec
       end
 
       def print_table(report)
-        rows = report.results.records.sort.map do |source, record|
-          [source, record.version.to_s, record.status, record.duration ? format("%.1f s", record.duration) : "",
+        rows = report.results.entries.map do |record|
+          [record.source, record.version.to_s, record.status, record.duration ? format("%.1f s", record.duration) : "",
            record.reason.to_s.lines.first.to_s.strip]
         end
         @io.puts("#{report.target}: #{count(report, :built)} built, #{report.reused} already built, " \
@@ -59,7 +59,7 @@ module Relspec
 
       def as_json(report)
         { "target" => report.target.to_s, "folder" => report.dir,
-          "packages" => (report.results&.records || {}).sort.to_h { |source, record| [source, record.to_h] } }
+          "packages" => (report.results&.entries || []).to_h { |record| [record.source, record.to_h] } }
       end
     end
   end

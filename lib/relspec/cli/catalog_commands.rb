@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require "thor"
+require_relative "strict_commands"
 require "json"
 require_relative "../atomic_file"
 
@@ -8,6 +9,7 @@ module Relspec
   module CLI
     # `relspec catalog …`: the package database of a workspace.
     class CatalogCommands < Thor
+      include StrictCommands
       namespace "catalog"
 
       def self.exit_on_failure?

@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require "thor"
+require_relative "strict_commands"
 require_relative "checked_options"
 require "fileutils"
 require_relative "../atomic_file"
@@ -12,6 +13,7 @@ module Relspec
     # release's binaries (rock-osdeps package set format).
     class OsdepsCommands < Thor
       include CheckedOptions
+      include StrictCommands
 
       namespace "osdeps"
 

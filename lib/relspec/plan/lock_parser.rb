@@ -71,6 +71,11 @@ module Relspec
           fail_at([Lock::FORMAT_KEY], "unknown lock format #{format.inspect} (this relspec reads 1 and #{Lock::FORMAT_VERSION})")
         end
         known_keys(data, [], ROOT_KEYS)
+        # LockGenerator writes every section of format 2: one missing means
+        # the file was cut short, and reading it as "no targets" would
+        # show a diff or a plan less than the truth.
+        missing = format == Lock::FORMAT_VERSION ? ROOT_KEYS - data.keys : []
+        fail_at([], "the lock has no #{missing.first}: section (cut short?)") unless missing.empty?
         release = string(data, ["release"])
         fail_at(["release"], "the lock is of release #{release}, not #{@release}") if @release && release != @release
 
