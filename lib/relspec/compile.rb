@@ -51,7 +51,9 @@ module Relspec
       @effective = @planned.resolution.effective
       require_maintainer
       require_workspace
-      availability = @check ? Availability.guard(@planned, timeout: @timeout, **(@check.is_a?(Hash) ? @check : {})) : nil
+      availability = if @check
+                       Availability.guard(@planned, timeout: @timeout, **(@check.is_a?(Hash) ? @check : {}))
+                     end
       @catalog = @planned.release_catalog.catalog
       plan = @planned.plan
       jobs, published = jobs_of(plan)
@@ -162,7 +164,7 @@ module Relspec
         dir = File.join(@out, @effective.release, "#{target.codename}-#{target.arch}")
         FileUtils.mkdir_p(dir)
         AtomicFile.update(File.join(dir, "plan.yml"),
-                         Yaml::Writer.dump("release" => plan.release, "target" => target.to_s, "builds" => entries))
+                          Yaml::Writer.dump("release" => plan.release, "target" => target.to_s, "builds" => entries))
       end
     end
 

@@ -15,7 +15,6 @@ module Relspec
 
       namespace "osdeps"
 
-
       def self.exit_on_failure?
         true
       end

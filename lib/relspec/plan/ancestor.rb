@@ -68,7 +68,7 @@ module Relspec
         location = path && (File.directory?(path) || !entry["url"]) ? path : entry["url"]
         keyring = entry["keyring"] && File.expand_path(entry["keyring"], base)
         Apt::Repository.new(Apt::Fetcher.new(location, **fetcher_options), keyring: keyring,
-                                                                            trusted: entry["trusted"] == true, cache: cache)
+                                                                           trusted: entry["trusted"] == true, cache: cache)
       end
     end
   end

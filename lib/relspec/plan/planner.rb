@@ -203,7 +203,7 @@ module Relspec
         end
       end
 
-      def built(package, target, cause)
+      def built(package, _target, cause)
         deb = deb_name(package, @effective["package_prefix"], @effective.release)
         unless upstream(package)
           raise InvalidInput, [Diagnostic.error("unknown-commit-time",
@@ -291,12 +291,12 @@ module Relspec
         end
         unmatched = entries.reject { |pattern, _, _| @catalog.packages.keys.any? { |name| pattern.match?(name) } }
         unless unmatched.empty?
-          raise InvalidInput, unmatched.map { |pattern, _, index|
+          raise(InvalidInput, unmatched.map do |pattern, _, index|
             Diagnostic.error("unmatched-blacklist", "blacklist entry #{pattern.source.inspect} matches no package " \
                                                     "of the workspace",
                              location: @spec_file.location(["blacklist", index]),
                              hint: "check the name, or remove the entry")
-          }
+          end)
         end
         entries
       end

@@ -67,7 +67,7 @@ module Relspec
 
       def read
         unless @document.ok?
-          raise InvalidInput, @document.diagnostics.select(&:error?).map { |d| diagnostic(d.message, d.location) }
+          raise(InvalidInput, @document.diagnostics.select(&:error?).map { |d| diagnostic(d.message, d.location) })
         end
 
         data = @document.data
@@ -132,6 +132,7 @@ module Relspec
       def mapping(hash, path)
         value = hash[path.last]
         return {} if value.nil?
+
         fail_at(path, "#{describe(path)} must be a mapping") unless value.is_a?(Hash)
 
         value
