@@ -51,7 +51,7 @@ Dir.mktmpdir("relspec-bench-build") do |dir|
     layer = i / per_layer
     previous = layer.zero? ? [] : names[((layer - 1) * per_layer)...(layer * per_layer)]
     # One or two dependencies on the layer below, spread deterministically.
-    deps = previous.empty? ? [] : [previous[i % previous.size], previous[(i * 7 + 3) % previous.size]].uniq
+    deps = previous.empty? ? [] : [previous[i % previous.size], previous[((i * 7) + 3) % previous.size]].uniq
     release.package(name, dependencies: deps)
   end
   release.compile

@@ -8,6 +8,7 @@ require_relative "osdeps/renderer"
 require_relative "yaml/writer"
 require_relative "atomic_file"
 require_relative "temporaries"
+require_relative "worker_pool"
 
 module Relspec
   # `relspec compile`: plan the release, then turn every build decision into
@@ -50,7 +51,9 @@ module Relspec
       @effective = @planned.resolution.effective
       require_maintainer
       require_workspace
-      availability = @check ? Availability.guard(@planned, timeout: @timeout, **(@check.is_a?(Hash) ? @check : {})) : nil
+      availability = if @check
+                       Availability.guard(@planned, timeout: @timeout, **(@check.is_a?(Hash) ? @check : {}))
+                     end
       @catalog = @planned.release_catalog.catalog
       plan = @planned.plan
       jobs, published = jobs_of(plan)
@@ -116,35 +119,21 @@ module Relspec
 
     def emit(jobs)
       sweep_temporaries
-      queue = Queue.new
-      jobs.each { |job| queue << job }
       written = []
       unchanged = []
       errors = []
       repaired = []
       lock = Mutex.new
-      failures = []
-      Array.new([@jobs, jobs.size].min) do
-        Thread.new do
-          Thread.current.report_on_exception = false
-          while (job = next_job(queue))
-            dir, package = job
-            begin
-              changed = package.emit(dir)
-              lock.synchronize do
-                (changed ? written : unchanged) << dir
-                repaired.concat(package.repaired)
-                @progress&.call(written.size + unchanged.size, jobs.size)
-              end
-            rescue InvalidInput => e
-              lock.synchronize { errors.concat(e.diagnostics) }
-            rescue StandardError => e # re-raised below, in the main thread, where errors become messages
-              lock.synchronize { failures << e }
-            end
-          end
+      WorkerPool.new(@jobs).each(jobs) do |(dir, package)|
+        changed = package.emit(dir)
+        lock.synchronize do
+          (changed ? written : unchanged) << dir
+          repaired.concat(package.repaired)
+          @progress&.call(written.size + unchanged.size, jobs.size)
         end
-      end.each(&:join)
-      raise failures.first unless failures.empty?
+      rescue InvalidInput => e
+        lock.synchronize { errors.concat(e.diagnostics) }
+      end
       raise InvalidInput, errors unless errors.empty?
 
       [written.sort, unchanged.sort, repaired.uniq.sort]
@@ -158,12 +147,6 @@ module Relspec
       [*Dir.glob(File.join(release, "*/")), *Dir.glob(File.join(orig, "*/")), orig].each do |dir|
         Temporaries.sweep(dir)
       end
-    end
-
-    def next_job(queue)
-      queue.pop(true)
-    rescue ThreadError
-      nil
     end
 
     # <out>/<release>/<codename>-<arch>/plan.yml: the builds in dependency
@@ -181,7 +164,7 @@ module Relspec
         dir = File.join(@out, @effective.release, "#{target.codename}-#{target.arch}")
         FileUtils.mkdir_p(dir)
         AtomicFile.update(File.join(dir, "plan.yml"),
-                         Yaml::Writer.dump("release" => plan.release, "target" => target.to_s, "builds" => entries))
+                          Yaml::Writer.dump("release" => plan.release, "target" => target.to_s, "builds" => entries))
       end
     end
 

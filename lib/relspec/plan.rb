@@ -73,7 +73,7 @@ module Relspec
     # The folder above the spec's folder (where releases/ and overlays/ are),
     # as the user would write it.
     def self.project_root(path)
-      DisplayPath.of(File.dirname(File.dirname(File.expand_path(path))))
+      DisplayPath.of(File.dirname(File.expand_path(path), 2))
     end
 
     # The lock, strictly read: one that cannot be read stops the run unless
@@ -116,7 +116,7 @@ module Relspec
       origin = effective.origin("distributions")
       location = origin&.location || resolution.spec_file.location(["release"])
       DistributionPackages.read(effective.distributions, targets, wanted, spec_dir: File.dirname(resolution.spec_file.path),
-                                                                           location: location, fetcher_options: fetcher_options, cache: cache)
+                                                                          location: location, fetcher_options: fetcher_options, cache: cache)
     end
 
     def self.read_own(resolution, targets, fetcher_options, cache)

@@ -37,8 +37,10 @@ module Relspec
       all = Plan::Target.all(effective)
       selected = Plan::Target.select(target, all, effective.release)
       results = selected.to_h { |one| [one, read_results(out, effective.release, one, explicit: !target.nil?)] }
-      raise PublishError, "nothing to publish: no target of #{effective.release} has a build-results.yml under " \
-                          "#{File.join(out, effective.release)} (run relspec build first)" if results.values.none?
+      if results.values.none?
+        raise PublishError, "nothing to publish: no target of #{effective.release} has a build-results.yml under " \
+                            "#{File.join(out, effective.release)} (run relspec build first)"
+      end
 
       uploads = results.to_h { |one, read| [one, read ? read.built.map { |entry| Upload.of(entry, File.dirname(read.path), read.path) } : []] }
       sign_with = effective.repository.sign_with

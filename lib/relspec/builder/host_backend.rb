@@ -76,7 +76,7 @@ module Relspec
                             "them, or build with --backend sbuild), see #{request.log}"
         end
         relations.flat_map { |relation| relation.split(/\s*\|\s*/) }
-             .filter_map { |alt| local[alt[/\A[^\s(:]+/]] }.uniq
+                 .filter_map { |alt| local[alt[/\A[^\s(:]+/]] }.uniq
       end
 
       # The command prefix that runs a build with +debs+ visible under /opt.

@@ -65,7 +65,7 @@ module Relspec
         known.slice(*names)
       end
 
-      def as_json(release, selections)
+      def as_json(_release, selections)
         selections.to_h do |codename, selection|
           [codename, selection.packages.to_h { |package| [package.name, package.to_h.slice("build_type", "vcs", "commit_time", "version")] }]
         end

@@ -50,7 +50,7 @@ module Relspec
       end
 
       def base_pairs
-        roots = @paths.map { |path| DisplayPath.of(File.dirname(File.dirname(File.expand_path(path)))) }.uniq
+        roots = @paths.map { |path| DisplayPath.of(File.dirname(File.expand_path(path), 2)) }.uniq
         raise Error, "the specs given belong to different projects: #{roots.join(', ')}" if roots.size > 1
 
         names = @paths.empty? ? nil : @paths.map { |path| File.basename(path, ".yml") }

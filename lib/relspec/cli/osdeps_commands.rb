@@ -17,7 +17,6 @@ module Relspec
 
       namespace "osdeps"
 
-
       def self.exit_on_failure?
         true
       end

@@ -20,6 +20,7 @@ module Relspec
         targets = plan.targets.keys.sort_by(&:to_s)
         targets = targets.select { |target| target.to_s == @target } if @target
         raise Error, "#{@target} is not a target of #{plan.release}" if targets.empty?
+
         unless plan.packages.key?(@package)
           hint = Suggestion.hint(@package, plan.packages.keys)
           raise Error, "#{@package} is not part of release #{plan.release}#{" (#{hint})" if hint}"

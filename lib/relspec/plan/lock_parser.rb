@@ -61,7 +61,7 @@ module Relspec
 
       def lock
         unless @document.ok?
-          raise LockError, @document.diagnostics.select(&:error?).map { |d| Diagnostic.error("lock", d.message, location: d.location, hint: DISCARD_HINT) }
+          raise(LockError, @document.diagnostics.select(&:error?).map { |d| Diagnostic.error("lock", d.message, location: d.location, hint: DISCARD_HINT) })
         end
 
         data = @document.data
@@ -162,6 +162,7 @@ module Relspec
       # +value+ (at +path+) as a Hash; a missing top-level section is empty.
       def mapping(value, path)
         return {} if value.nil? && path.size == 1
+
         fail_at(path, "#{describe(path)} must be a mapping") unless value.is_a?(Hash)
 
         value
@@ -176,8 +177,7 @@ module Relspec
         value = hash[path.last]
         fail_at(path, "#{describe(path)} must be text") unless value.is_a?(String) || value.is_a?(Integer) || value.is_a?(Float)
 
-        value = @document.raw(path) || value.to_s
-        value
+        @document.raw(path) || value.to_s
       end
 
       def optional_string(hash, path)
@@ -187,6 +187,7 @@ module Relspec
       def strings(hash, path)
         list = hash[path.last]
         return [] if list.nil?
+
         fail_at(path, "#{describe(path)} must be a list of text") unless list.is_a?(Array) && list.all?(String)
 
         list

@@ -28,6 +28,7 @@ RSpec.describe "a release of real Rock packages" do
     @facets = RockGems.facets(File.join(@dir, "gems"))
     # offline, a stand-in with the two files utilrb loads; CI always builds the real gem
     raise "facets-3.1.0.gem is neither in #{RockGems::CACHE} nor fetchable" if @facets == :stand_in && ENV["CI"]
+
     need_fixture(RockGems.rice(File.join(@dir, "gems")), "rice-3.0.0.gem is neither in #{RockGems::CACHE} nor fetchable")
     FileUtils.mkdir_p(File.join(@dir, "specs"))
     File.write(File.join(@dir, "specs", "rock.yml"), <<~YAML)
