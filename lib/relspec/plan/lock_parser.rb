@@ -145,18 +145,17 @@ module Relspec
       # Format 1 kept builds in the decisions (and last_build for packages
       # not built that time).
       def history_of_format1(data)
-        history = History.empty
-        mapping(data["targets"], ["targets"]).each do |target, entries|
-          mapping(entries, ["targets", target]).each do |name, entry|
-            [entry, entry.is_a?(Hash) && entry["last_build"]].each do |build|
+        builds = mapping(data["targets"], ["targets"]).flat_map do |target, entries|
+          mapping(entries, ["targets", target]).flat_map do |name, entry|
+            [entry, entry.is_a?(Hash) && entry["last_build"]].filter_map do |build|
               next unless build.is_a?(Hash) && build["debian_digest"]
 
               version = Debian::PackageVersion.parse(build["version"])
-              history = history.with(target, name, version, build["debian_digest"]) if version
+              version && [target, name, version, build["debian_digest"]]
             end
           end
         end
-        history
+        History.empty.with_all(builds)
       end
 
       # +value+ (at +path+) as a Hash; a missing top-level section is empty.
