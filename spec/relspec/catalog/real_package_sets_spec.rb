@@ -3,6 +3,7 @@
 require "spec_helper"
 require "relspec/catalog/release_catalog"
 require_relative "../../support/real_rock_workspace"
+require_relative "../../support/gem_builder"
 
 # The REAL Rock package sets (rock.core, which imports orocos.toolchain), read
 # as autoproj reads them: what the package sets decide while loading
@@ -52,6 +53,36 @@ RSpec.describe "the real Rock package sets" do
       File.write(stale, "// left by an old RTT build\n")
       expect(catalog_of(copy).package("rtt")).not_to be_nil
       expect(File.read(stale)).to eq("// left by an old RTT build\n")
+    end
+  end
+
+  # typelib and utilrb need the gem facets, which bookworm lacks: it is
+  # packaged from gem_source. The facets here is a stand-in whose runtime
+  # dependencies are the kinds the real layout's gems have: Ruby's default
+  # gems (bookworm's libruby3.1 provides ruby-date, ruby-logger, … at their
+  # versions), gems Debian names irregularly (rake, yard, ruby-concurrent)
+  # and a version-constrained one Debian has (ruby-pastel 0.8.0). None of
+  # them may become a package or a false note; this machine's apt lists
+  # stand for bookworm's archive.
+  it "takes Ruby's default gems and Debian's irregularly named gems from the distribution" do
+    with_specs("rock" => <<~YAML) do |dir, root|
+      release: rock
+      workspace: #{@workspace.root}
+      select: [typelib, tools/metaruby]
+      targets: { bookworm: [amd64] }
+      distributions: { bookworm: { archive: { host: true } } }
+      gem_source: ../gems
+    YAML
+      GemBuilder.build(File.join(root, "gems"), "facets", "3.1.0",
+                       dependencies: { "pastel" => "~> 0.8", "date" => ">= 0", "io-console" => ">= 0.5", "logger" => ">= 1.4",
+                                       "rake" => ">= 12.0", "yard" => ">= 0.9", "concurrent-ruby" => "~> 1.1" })
+      run = relspec("plan", File.join(dir, "rock.yml"))
+      expect(run.exit_code).to eq(0), run.stderr
+      expect(run.stdout).to start_with("rock: 4 packages on 1 targets")
+      built = run.stdout[/^builds on bookworm\/amd64:\n(.*?)\n\n/m, 1].lines.grep(/^  \S/).map { |line| line.split.first }
+      expect(built).to eq(%w[facets tools/metaruby typelib utilrb])
+      expect(run.stdout).to include("the bookworm archive has no ruby-facets: gem facets is packaged here")
+      expect(run.stdout).not_to include("lacks")
     end
   end
 end
