@@ -49,7 +49,7 @@ module Relspec
       targets = Target.all(effective)
       gem_distribution = nil
       gem_archives = lambda do
-        gem_distribution ||= read_distribution(resolution, /\Aruby-/, targets, fetcher_options, cache)
+        gem_distribution ||= read_distribution(resolution, Debian::Naming::DISTRIBUTION_GEMS, targets, fetcher_options, cache)
         targets.to_h { |target| [target.to_s, gem_distribution.index(target)] }
       end
       release_catalog = Catalog::ReleaseCatalog.load(resolution, cache: catalog_cache, gem_fetch: gem_fetch, timeout: timeout,
