@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require "fileutils"
+require "shellwords"
 require_relative "../error"
 require_relative "../cache_dir"
 require_relative "../temporaries"
@@ -50,9 +51,7 @@ module Relspec
         Temporaries.sweep(File.dirname(@path))
         partial = Temporaries.path(File.dirname(@path), File.basename(@path, ".tar.zst"), suffix: ".tar.zst")
         begin
-          @tool.run("chroot #{@target}", ["mmdebstrap", "--variant=buildd", "--mode=unshare", "--arch=#{@target.arch}",
-                                          "--include=#{INCLUDE.join(',')}",
-                                          *components_option, @target.codename, partial, *mirrors], log: log)
+          @tool.run("chroot #{@target}", command(partial, mirrors), log: log)
           File.rename(partial, @path)
         ensure
           FileUtils.rm_f(partial)
@@ -60,7 +59,22 @@ module Relspec
         true
       end
 
+      # Shell lines that make the tarball where it is missing (a Slurm
+      # chroot-prepare job, on a node of the target's architecture).
+      def job_steps
+        # mmdebstrap picks the format by the name's ending
+        partial = File.join(File.dirname(@path), ".#{File.basename(@path, '.tar.zst')}.partial.tar.zst")
+        ["if [ ! -f #{Shellwords.escape(@path)} ]; then mkdir -p #{Shellwords.escape(File.dirname(@path))} && " \
+         "#{Shellwords.join(command(partial, mirrors_or_raise))} && mv #{Shellwords.escape(partial)} " \
+         "#{Shellwords.escape(@path)}; fi"]
+      end
+
       private
+
+      def command(partial, mirrors)
+        ["mmdebstrap", "--variant=buildd", "--mode=unshare", "--arch=#{@target.arch}", "--include=#{INCLUDE.join(',')}",
+         *components_option, @target.codename, partial, *mirrors]
+      end
 
       def archive
         @distribution&.archive || {}
