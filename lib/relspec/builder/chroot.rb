@@ -1,10 +1,12 @@
 # frozen_string_literal: true
 
 require "fileutils"
+require "open3"
 require "shellwords"
 require_relative "../error"
 require_relative "../cache_dir"
 require_relative "../temporaries"
+require_relative "emulation"
 
 module Relspec
   module Builder
@@ -26,7 +28,9 @@ module Relspec
 
       # +distribution+: ReleaseSpec::Distribution of the codename; +os_release+:
       # the host's /etc/os-release (read to know the host's own codename).
-      def initialize(target, distribution, tool, cache_dir: CacheDir.for("chroots"), os_release: "/etc/os-release")
+      # +emulation+: checks that this machine runs the target's binaries.
+      def initialize(target, distribution, tool, cache_dir: CacheDir.for("chroots"), os_release: "/etc/os-release",
+                     emulation: Emulation.new(Chroot.host_arch))
         @target = target
         @distribution = distribution
         @tool = tool
@@ -34,6 +38,13 @@ module Relspec
 
         @path = File.join(cache_dir, "#{target.codename}-#{target.arch}.tar.zst")
         @os_release = os_release
+        @emulation = emulation
+      end
+
+      # This machine's Debian architecture.
+      def self.host_arch
+        output, status = Open3.capture2("dpkg", "--print-architecture")
+        status.success? ? output.strip : "amd64"
       end
 
       def exist?
@@ -45,6 +56,7 @@ module Relspec
       def ensure(log)
         return false if exist?
 
+        @emulation.check(@target.arch)
         mirrors = mirrors_or_raise
         FileUtils.mkdir_p(File.dirname(@path))
         # a killed mmdebstrap leaves hundreds of MB behind

@@ -176,4 +176,27 @@ RSpec.describe "relspec build --engine slurm", order: :defined do
   ensure
     FileUtils.rm_rf(File.join(@dir, ".relspec"))
   end
+
+  it "builds a real sbuild chain through Slurm, the chroot made by the target's chroot job" do
+    release = BuildRelease.new(File.join(@dir, "sbuild"), "sls")
+    release.package("base/one")
+    release.package("base/two", dependencies: ["base/one"])
+    release.compile
+    # the chroot tarballs of the test run (made by the first sbuild test, or here by the chroot job)
+    shared = File.join(CliRunner::CACHE, "relspec")
+    run = @cluster.relspec("build", "specs/sls.yml", "--out", "out", "--backend", "sbuild", "--engine", "slurm",
+                           "--slurm", "poll_interval=0.5", "--slurm", "shared_folder=#{shared}", chdir: release.dir)
+    expect(run.exit_code).to eq(0), run.stdout + run.stderr
+    packages = results(release).fetch("packages")
+    expect(results(release).fetch("backend")).to eq("sbuild")
+    expect(packages.values.map { |record| record["status"] }).to eq(%w[built built])
+    expect(File.size(File.join(shared, "chroots", "bookworm-amd64.tar.zst"))).to be > 10_000_000
+    script = File.read(Dir.glob(File.join(release.target_dir, "slurm", "*", "#{release.source('base/two')}.sh")).first)
+    # the sbuild backend's own command line, given the first package's results folder
+    expect(script).to include("sbuild --chroot-mode=unshare --chroot=#{shared}/chroots/bookworm-amd64.tar.zst",
+                              "--extra-package=#{release.target_dir}/results/#{release.source('base/one')}")
+    two = File.read(File.join(release.target_dir, "logs", "#{release.source('base/two')}.log"))
+    # sbuild installed the build-dependency the job before built.
+    expect(two).to match(/Unpacking #{Regexp.escape(release.source('base/one'))} /)
+  end
 end

@@ -30,6 +30,8 @@ module Relspec
             rm -rf "$work" "$result"
             mkdir -p "$work"
             trap 'rm -rf "$work"' EXIT
+            # scancel sends TERM: leave through the EXIT trap
+            trap 'exit 143' TERM INT
             if [ -n "$out" ]; then rm -rf "$out" && mkdir -p "$out"; fi
             steps() {
               set -e
