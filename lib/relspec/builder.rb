@@ -11,6 +11,9 @@ require_relative "builder/scheduler"
 require_relative "builder/tool"
 require_relative "builder/host_backend"
 require_relative "builder/sbuild_backend"
+require_relative "builder/slurm/cluster"
+require_relative "builder/slurm/engine"
+require_relative "builder/slurm/settings"
 
 module Relspec
   # `relspec build`: builds the source packages `relspec compile` wrote,
@@ -20,6 +23,7 @@ module Relspec
   # <target folder>/logs/<source>.log. docs/build.md describes it.
   module Builder
     BACKENDS = %w[sbuild host].freeze
+    ENGINES = %w[local slurm].freeze
 
     # Per target: +reused+ counts packages an earlier run built (files checked).
     TargetReport = Struct.new(:target, :dir, :results, :outcomes, :reused, :prepared, keyword_init: true) do
@@ -30,16 +34,26 @@ module Relspec
 
     # +targets+: ["codename/arch"] to build (default: every target of the
     # spec); +listener+: receives start(target, total, done), building(entry),
-    # finished(outcome) for progress output.
+    # finished(outcome) for progress output. +engine+: "local" (the
+    # Scheduler, --jobs at once) or "slurm" (Slurm::Engine with
+    # +slurm_settings+); +notices+: where the Slurm engine says what it
+    # cancelled.
     def self.run(path, out:, backend: "sbuild", jobs: 1, targets: nil, keep_going: false, rebuild: false,
-                 prepare_only: false, listener: nil)
+                 prepare_only: false, listener: nil, engine: "local", slurm_settings: nil, notices: nil)
       Run.new(path, out: out, backend: backend, jobs: jobs, targets: targets, keep_going: keep_going,
-                    rebuild: rebuild, prepare_only: prepare_only, listener: listener).call
+                    rebuild: rebuild, prepare_only: prepare_only, listener: listener,
+                    engine: engine, slurm_settings: slurm_settings, notices: notices).call
     end
 
     # One `relspec build` run.
     class Run
-      def initialize(path, out:, backend:, jobs:, targets:, keep_going:, rebuild:, prepare_only:, listener:)
+      def initialize(path, out:, backend:, jobs:, targets:, keep_going:, rebuild:, prepare_only:, listener:,
+                     engine: "local", slurm_settings: nil, notices: nil)
+        raise InvalidOption, "unknown engine #{engine.inspect} (known: #{ENGINES.join(', ')})" unless ENGINES.include?(engine)
+
+        @engine = engine
+        @slurm_settings = slurm_settings || Slurm::Settings.new({})
+        @notices = notices
         @path = path
         @out = out
         @backend_name = backend
@@ -60,7 +74,8 @@ module Relspec
           dir = File.expand_path(File.join(@out, @effective.release, "#{target.codename}-#{target.arch}"))
           plan = BuildPlan.read(dir)
           FileUtils.mkdir_p(File.join(dir, "logs"))
-          prepared = backend.prepare(target, log: File.join(dir, "logs", "prepare.log"))
+          # on a cluster the chroot-prepare job of the target makes it, on a node
+          prepared = slurm? && !@prepare_only ? false : backend.prepare(target, log: File.join(dir, "logs", "prepare.log"))
           next TargetReport.new(target: target, dir: dir, outcomes: [], reused: 0, prepared: prepared) if @prepare_only
 
           build_target(target, dir, plan, backend, Repositories.of(resolution, target.codename), prepared)
@@ -75,9 +90,20 @@ module Relspec
       def make_backend
         case @backend_name
         when "host" then HostBackend.new(@tool)
-        when "sbuild" then SbuildBackend.new(@tool, @effective.distributions)
+        when "sbuild" then SbuildBackend.new(@tool, @effective.distributions, chroot_cache: shared_chroots)
         else raise BuildError, "unknown backend #{@backend_name.inspect} (known: #{BACKENDS.join(', ')})"
         end
+      end
+
+      def slurm?
+        @engine == "slurm"
+      end
+
+      # With Slurm, the chroot tarballs live in the shared folder when the
+      # settings name one (every node of an architecture uses the same).
+      def shared_chroots
+        folder = slurm? && @slurm_settings["shared_folder"]
+        folder ? File.join(File.expand_path(folder), "chroots") : nil
       end
 
       def selected_targets
@@ -100,19 +126,26 @@ module Relspec
         @listener&.start(target, plan.entries.size, done.size)
         local = Mutex.new
         debs = done.flat_map { |source| debs_of(dir, results[source]) }
-        outcomes = Scheduler.new(plan.entries, jobs: @jobs, keep_going: @keep_going, done: done).run(
-          on_start: ->(entry) { @listener&.building(entry) },
-          on_done: lambda do |outcome|
-            record(results, dir, outcome)
-            results.write(backend: backend.name)
-            @listener&.finished(outcome)
-          end
-        ) do |entry|
-          request = request_for(plan, entry, target, repositories, local.synchronize { debs.dup }, dir)
-          files = backend.build(request)
-          local.synchronize { debs.concat(files.grep(/\.u?deb\z/)) }
-          files
+        on_start = ->(entry) { @listener&.building(entry) }
+        on_done = lambda do |outcome|
+          record(results, dir, outcome)
+          results.write(backend: backend.name)
+          @listener&.finished(outcome)
         end
+        outcomes = if slurm?
+                     Slurm::Engine.new(cluster: Slurm::Cluster.new, settings: @slurm_settings, backend: backend,
+                                       notices: @notices)
+                                  .run(plan: plan, target: target, repositories: repositories, done: done,
+                                       done_debs: debs, keep_going: @keep_going, on_start: on_start, on_done: on_done)
+                   else
+                     Scheduler.new(plan.entries, jobs: @jobs, keep_going: @keep_going, done: done)
+                              .run(on_start: on_start, on_done: on_done) do |entry|
+                       request = request_for(plan, entry, target, repositories, local.synchronize { debs.dup }, dir)
+                       files = backend.build(request)
+                       local.synchronize { debs.concat(files.grep(/\.u?deb\z/)) }
+                       files
+                     end
+                   end
         results.write(backend: backend.name) if outcomes.empty?
         TargetReport.new(target: target, dir: dir, results: results, outcomes: outcomes, reused: done.size,
                          prepared: prepared)

@@ -159,13 +159,19 @@ module Relspec
       option :rebuild, type: :boolean, default: false, desc: "Rebuild packages an earlier run built"
       option :prepare, type: :boolean, default: false, desc: "Only make the chroot tarballs (sbuild)"
       option :format, enum: %w[text json], default: "text", desc: "Output format"
+      option :engine, enum: %w[local slurm], default: "local",
+                      desc: "local (--jobs at once here) or slurm (jobs on a Slurm cluster; docs/scale-out.md)"
+      option :slurm, type: :string, repeatable: true,
+                     desc: "A cluster setting KEY=VALUE (partition, account, time_limit, memory, cpus_per_build, " \
+                           "shared_folder, poll_interval, features.ARCH); repeatable"
       def build(path)
         require_relative "build_command"
         require_relative "build_progress"
         finish BuildCommand.new(path: path, out: options[:out], backend: options[:backend], jobs: options[:jobs],
                                 targets: options[:target], keep_going: options[:keep_going],
                                 rebuild: options[:rebuild], prepare: options[:prepare], format: options[:format],
-                                out_io: $stdout, progress_io: options[:quiet] ? nil : $stderr).call
+                                out_io: $stdout, progress_io: options[:quiet] ? nil : $stderr,
+                                engine: options[:engine], slurm: options[:slurm] || [], err_io: $stderr).call
       end
 
       desc "check SPEC", "Check that the OS dependencies of the release exist on every target"
