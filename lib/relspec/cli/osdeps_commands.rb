@@ -57,6 +57,9 @@ module Relspec
         library = ReleaseSpec::Library.new(options[:specs])
         raise Error, "#{options[:specs]}/ holds no release spec" if library.names.empty?
 
+        if options[:repo_url] && !Osdeps::IndexCheck.http?(options[:repo_url])
+          raise Error, "--repo-url must be an http(s) URL, not #{options[:repo_url].inspect}"
+        end
         releases = library.paths.map { |path| ReleaseSpec.resolve(path).effective }
         text = Osdeps::ReleaseIndex.render(releases, repo_url: options[:repo_url], public_key: options[:public_key])
         target = File.join(File.dirname(options[:specs]), "releases", "releases.yml").delete_prefix("./")

@@ -12,7 +12,8 @@ RSpec.describe "relspec osdeps render" do
     @fixture = ReleaseFixture.new(@dir)
     all = %w[base/cmake base/logging base/types data/models drivers/iodrivers_base tools/legacy tools/orocos.rb]
     @fixture.repository("parent", [%w[bionic amd64], %w[bionic arm64], %w[buster amd64]], all.to_h { |n| [n, {}] })
-    @fixture.spec("parent", "targets: { bionic: [amd64, arm64], buster: [amd64] }\nrepository: { path: ../repos/parent, trusted: true }\n" \
+    @fixture.spec("parent", "targets: { bionic: [amd64, arm64], buster: [amd64] }\n" \
+                            "repository: { url: https://example.org/releases/parent, path: ../repos/parent, trusted: true }\n" \
                             "maintainer: Demo <demo@example.org>\n")
     @fixture.spec("child", "parent: parent\nblacklist: [{ match: base/types, reason: new API }]\n" \
                            "repository: { url: https://example.org/releases/child, path: ../repos/child, trusted: true }\n")
