@@ -227,7 +227,7 @@ module Relspec
       desc "catalog SUBCOMMAND", "The package database of a workspace (export, show)"
       subcommand "catalog", CatalogCommands
 
-      desc "osdeps SUBCOMMAND", "osdeps files for autoproj (render SPEC, index, select); `osdeps SPEC` renders"
+      desc "osdeps SUBCOMMAND", "osdeps files for autoproj (render SPEC, index, select, package-set); `osdeps SPEC` renders"
       subcommand "osdeps", OsdepsCommands
 
       # `relspec osdeps SPEC` is `relspec osdeps render SPEC`.
@@ -239,7 +239,7 @@ module Relspec
         leading = argv.take_while { |arg| GLOBAL_FLAGS.include?(arg) }
         argv = argv.drop(leading.size) + leading unless leading.empty? || argv.size == leading.size
         return argv unless argv[0] == "osdeps" && argv[1] && !argv[1].start_with?("-")
-        return argv if OsdepsCommands.all_commands.key?(argv[1]) || argv[1] == "help"
+        return argv if OsdepsCommands.all_commands.key?(argv[1].tr("-", "_")) || argv[1] == "help"
 
         [argv[0], "render", *argv[1..]]
       end

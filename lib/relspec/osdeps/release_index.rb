@@ -14,12 +14,11 @@ module Relspec
     module ReleaseIndex
       module_function
 
-      # +specs+: EffectiveSpec of every release in specs/, +repo_url+ and
-      # +public_key+: the defaults (repo_url defaults to the folder most
+      # +releases+: IndexedRelease of every release in specs/, +repo_url+
+      # and +public_key+: the defaults (repo_url defaults to the folder most
       # release URLs share). Raises InvalidInput for a release the index
       # cannot express (IndexCheck).
-      def render(specs, repo_url: nil, public_key: nil)
-        releases = specs.map { |spec| IndexedRelease.from_effective(spec) }
+      def render(releases, repo_url: nil, public_key: nil)
         problems = IndexCheck.problems(releases)
         raise InvalidInput, problems unless problems.empty?
 
