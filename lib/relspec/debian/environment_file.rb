@@ -23,7 +23,8 @@ module Relspec
 
       module_function
 
-      # +variables+: {name => [values]}, each added as a path (prepended).
+      # +variables+: {name => [values]}, in search order, each added as a
+      # path (prepended).
       def render(variables, type: :add_path, priority: 0)
         raise ArgumentError, "unknown environment type #{type}" unless TYPES.include?(type)
 
@@ -32,7 +33,9 @@ module Relspec
           next if values.empty?
 
           out << "#{name}:\n  :type: :#{type}\n  :values:\n"
-          values.each { |value| out << "  - #{JSON.generate(value)}\n" }
+          # package sets prepend one value after the other, so the value to
+          # be searched first is written last
+          values.reverse_each { |value| out << "  - #{JSON.generate(value)}\n" }
           out << "  :priority: #{Integer(priority)}\n"
         end
         out

@@ -4,9 +4,9 @@ require_relative "../yaml/writer"
 require_relative "../apt/package_index"
 require_relative "../diagnostic"
 require_relative "../error"
+require_relative "../display_path"
 require_relative "index_check"
 require_relative "release_index"
-require_relative "public_key"
 
 module Relspec
   module Osdeps
@@ -17,7 +17,8 @@ module Relspec
     # and data/: the release index, each release's osdeps files and the
     # Depends/Provides of its packages per target (for the blacklist's
     # reverse dependencies, without asking apt), how apt reaches each
-    # repository and the keys that sign them.
+    # repository and the public keyring (repository.keyring) that verifies
+    # each signed one.
     #
     # Everything comes from the published repositories (repository.path):
     # what users can install, not what a plan expects.
@@ -33,10 +34,9 @@ module Relspec
 
       module_function
 
-      # +releases+: IndexedRelease of every spec; +public_key+: key id =>
-      # armored public key (PublicKey.export). Raises InvalidInput for a
+      # +releases+: IndexedRelease of every spec. Raises InvalidInput for a
       # release users could not install from.
-      def assemble(releases, public_key: PublicKey.method(:export))
+      def assemble(releases)
         problems = IndexCheck.problems(releases) + releases.sort_by(&:name).flat_map { |release| problems(release) }
         raise InvalidInput, problems unless problems.empty?
 
@@ -48,10 +48,10 @@ module Relspec
         releases.sort_by(&:name).each do |release|
           files.merge!(release_files(release))
           apt[release.name] = { "url" => release.url, "trusted" => release.trusted }
-          next unless release.sign_with
+          next if release.trusted
 
-          apt[release.name]["key"] = "keys/#{release.name}.asc"
-          files["data/keys/#{release.name}.asc"] = public_key.call(release.sign_with)
+          apt[release.name]["key"] = "keys/#{release.name}.gpg"
+          files["data/keys/#{release.name}.gpg"] = File.binread(release.keyring)
         end
         files["data/apt.yml"] = Yaml::Writer.dump(apt)
         files.sort.to_h
@@ -88,9 +88,9 @@ module Relspec
           return [Diagnostic.error("package-set-repository", "#{release.name} has no repository.path: the package set " \
                                                              "is made from the published repository", location: location)]
         end
-        unless release.trusted || release.sign_with
-          return [Diagnostic.error("package-set-trust", "#{release.name}'s repository is neither signed " \
-                                                        "(repository.sign_with) nor trusted: true: apt would refuse it",
+        unless release.trusted || (release.keyring && File.file?(release.keyring))
+          return [Diagnostic.error("package-set-trust", "#{release.name}'s repository has neither a public keyring " \
+                                                        "(repository.keyring) nor trusted: true: apt would refuse it",
                                    location: location)]
         end
         release.targets.sort.flat_map do |codename, archs|
@@ -99,7 +99,7 @@ module Relspec
                     File.file?(File.join(release.repository_path, "osdeps", "#{release.name}-#{arch}.yml"))
 
             Diagnostic.error("package-set-unpublished", "#{release.name} is not published for #{codename}/#{arch} " \
-                                                        "in #{release.repository_path}",
+                                                        "in #{DisplayPath.of(release.repository_path)}",
                              location: location, hint: "run `relspec publish` for it first")
           end
         end

@@ -182,15 +182,15 @@ module RelspecPackageSet
       lines = @lineage.map do |name|
         entry = @apt.fetch(name)
         option = if entry["key"]
-                   keys[File.join(KEYRINGS, "relspec-#{name}.asc")] = File.read(File.join(@data, entry["key"]))
-                   "signed-by=#{File.join(KEYRINGS, "relspec-#{name}.asc")}"
+                   keys[File.join(KEYRINGS, "relspec-#{name}.gpg")] = File.binread(File.join(@data, entry["key"]))
+                   "signed-by=#{File.join(KEYRINGS, "relspec-#{name}.gpg")}"
                  else
                    "trusted=yes"
                  end
         "deb [#{option}] #{entry.fetch('url')} #{@codename} main\n"
       end
       text = "# written by relspec's autoproj package set\n#{lines.join}"
-      return if File.file?(LIST) && File.read(LIST) == text && keys.all? { |path, key| File.file?(path) && File.read(path) == key }
+      return if File.file?(LIST) && File.read(LIST) == text && keys.all? { |path, key| File.file?(path) && File.binread(path) == key }
 
       keys.each { |path, key| put(path, key) }
       put(LIST, text)
@@ -202,7 +202,8 @@ module RelspecPackageSet
     def put(path, content)
       if Process.uid.zero?
         FileUtils.mkdir_p(File.dirname(path))
-        File.write(path, content)
+        File.binwrite(path, content)
+        File.chmod(0o644, path)
       else
         run("sudo", "install", "-D", "-m", "0644", "/dev/stdin", path, stdin: content)
       end
