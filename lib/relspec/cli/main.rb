@@ -244,7 +244,7 @@ module Relspec
       desc "catalog SUBCOMMAND", "The package database of a workspace (export, show)"
       subcommand "catalog", CatalogCommands
 
-      desc "osdeps SUBCOMMAND", "osdeps files for autoproj (render SPEC, index, select); `osdeps SPEC` renders"
+      desc "osdeps SUBCOMMAND", "osdeps files for autoproj (render SPEC, index, select, package-set); `osdeps SPEC` renders"
       subcommand "osdeps", OsdepsCommands
 
       # Options of every command that people also write before the command

@@ -55,15 +55,35 @@ module Relspec
       def index
         require_relative "../release_spec"
         require_relative "../osdeps/release_index"
-        library = ReleaseSpec::Library.new(options[:specs])
-        raise Error, "#{options[:specs]}/ holds no release spec" if library.names.empty?
-
-        releases = library.paths.map { |path| ReleaseSpec.resolve(path).effective }
-        text = Osdeps::ReleaseIndex.render(releases, repo_url: options[:repo_url], public_key: options[:public_key])
+        library = spec_library
+        if options[:repo_url] && !Osdeps::IndexCheck.http?(options[:repo_url])
+          raise Error, "--repo-url must be an http(s) URL, not #{options[:repo_url].inspect}"
+        end
+        text = Osdeps::ReleaseIndex.render(indexed_releases(library), repo_url: options[:repo_url], public_key: options[:public_key])
         target = File.join(File.dirname(options[:specs]), "releases", "releases.yml").delete_prefix("./")
         FileUtils.mkdir_p(File.dirname(target))
         $stderr.puts("#{AtomicFile.update(target, text) ? 'wrote' : 'unchanged'} #{target}")
       end
+
+      desc "package-set", "Write relspec's autoproj package set for the releases of specs/ (default: build/package-set)"
+      long_desc <<~TEXT
+        A ready autoproj package set (source.yml, init.rb, data/) for every release of
+        --specs, from their published repositories: users add it to their manifest,
+        choose a release in autoproj/relspec.yml, and autoproj installs the release's
+        binaries with apt instead of building those packages (docs/releasing.md).
+        The folder is replaced as a whole, and only when its content changes.
+      TEXT
+      option :specs, type: :string, default: "specs", desc: "The folder of release specs"
+      option :out, type: :string, default: "build/package-set", desc: "The package set's folder"
+      def package_set
+        require_relative "../release_spec"
+        require_relative "../osdeps/package_set"
+        require_relative "../osdeps/package_set_writer"
+        files = Osdeps::PackageSet.assemble(indexed_releases(spec_library))
+        changed = Osdeps::PackageSetWriter.write(options[:out], files)
+        $stderr.puts("#{changed ? 'wrote' : 'unchanged'} #{options[:out]} (#{files.size} files)")
+      end
+      map "package-set" => :package_set
 
       desc "select", "Apply a user's deb_blacklist.yml: write rock-osdeps.osdeps and rock-osdeps.inactive"
       long_desc <<~TEXT
@@ -89,6 +109,21 @@ module Relspec
       end
 
       private
+
+      def spec_library
+        library = ReleaseSpec::Library.new(options[:specs])
+        raise Error, "#{options[:specs]}/ holds no release spec" if library.names.empty?
+
+        library
+      end
+
+      # The release index's view of every spec (Osdeps::IndexedRelease).
+      def indexed_releases(library)
+        require_relative "../osdeps/indexed_release"
+        library.paths.map do |path|
+          Osdeps::IndexedRelease.from_effective(ReleaseSpec.resolve(path).effective)
+        end
+      end
 
       # With --from-repository, a filter keeping what the repositories hold,
       # and the planned packages that are missing.

@@ -26,6 +26,10 @@ module Relspec
         indices = Osdeps::IndexSources.load(@options[:index], codename: codename(os), arch: @options[:arch],
                                                               trusted: @options[:trusted], keyring: @options[:keyring])
         selection = Osdeps::Selection.new(mapping, indices, blacklist)
+        blacklist.each do |entry|
+          note = entry.pattern.difference_note(mapping.keys.sort)
+          @err.puts("#{entry.location}: warning[blacklist-reading]: #{entry.pattern.source.inspect}: #{note}") if note
+        end
         selection.unmatched.each do |entry|
           @err.puts("#{entry.location}: warning[unmatched-blacklist]: #{entry.pattern.source.inspect} matches no package " \
                     "of #{@options[:release]}")
