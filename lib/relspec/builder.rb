@@ -3,6 +3,8 @@
 require "fileutils"
 require_relative "release_spec"
 require_relative "error"
+require_relative "target"
+require_relative "output_tree"
 require_relative "builder/build_plan"
 require_relative "builder/results"
 require_relative "builder/request"
@@ -56,11 +58,13 @@ module Relspec
         resolution = ReleaseSpec.resolve(@path)
         @effective = resolution.effective
         backend = make_backend
-        selected_targets.map do |target|
-          dir = File.expand_path(File.join(@out, @effective.release, "#{target.codename}-#{target.arch}"))
+        tree = OutputTree.new(@out, @effective.release)
+        Target.select(@only, Target.all(@effective), @effective.release).map do |target|
+          dir = File.expand_path(tree.target_dir(target))
           plan = BuildPlan.read(dir)
-          FileUtils.mkdir_p(File.join(dir, "logs"))
-          prepared = backend.prepare(target, log: File.join(dir, "logs", "prepare.log"))
+          logs = File.expand_path(tree.logs_dir(target))
+          FileUtils.mkdir_p(logs)
+          prepared = backend.prepare(target, log: File.join(logs, "prepare.log"))
           next TargetReport.new(target: target, dir: dir, outcomes: [], reused: 0, prepared: prepared) if @prepare_only
 
           build_target(target, dir, plan, backend, Repositories.of(resolution, target.codename), prepared)
@@ -77,16 +81,6 @@ module Relspec
         when "host" then HostBackend.new(@tool)
         when "sbuild" then SbuildBackend.new(@tool, @effective.distributions)
         else raise BuildError, "unknown backend #{@backend_name.inspect} (known: #{BACKENDS.join(', ')})"
-        end
-      end
-
-      def selected_targets
-        all = @effective.targets.flat_map { |codename, arches| Array(arches).map { |arch| Target.new(codename, arch) } }
-        return all if @only.nil? || @only.empty?
-
-        @only.uniq.map do |name|
-          all.find { |target| target.to_s == name } or
-            raise InvalidOption, "#{@effective.release} has no target #{name} (targets: #{all.join(', ')})"
         end
       end
 

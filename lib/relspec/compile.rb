@@ -4,7 +4,9 @@ require_relative "plan"
 require_relative "availability"
 require_relative "debian/source_package"
 require_relative "debian/naming"
-require_relative "osdeps/renderer"
+require_relative "osdeps/files"
+require_relative "output_tree"
+require_relative "project"
 require_relative "yaml/writer"
 require_relative "atomic_file"
 require_relative "temporaries"
@@ -48,6 +50,7 @@ module Relspec
       @planned = Plan.compute(@path, timeout: @timeout, discard_lock: @discard_lock)
       @on_planned&.call(@planned)
       @effective = @planned.resolution.effective
+      @tree = OutputTree.new(@out, @effective.release)
       require_maintainer
       require_workspace
       availability = @check ? Availability.guard(@planned, timeout: @timeout, **(@check.is_a?(Hash) ? @check : {})) : nil
@@ -92,7 +95,7 @@ module Relspec
           published << [target, decision.package] if decision.published?
           next unless decision.build?
 
-          dir = File.join(@out, @effective.release, "#{target.codename}-#{target.arch}", decision.deb_name)
+          dir = @tree.source_dir(target, decision.deb_name)
           jobs << [dir, source_package(@planned.work.fetch(target).fetch(decision.package), decision)]
         end
       end
@@ -104,7 +107,7 @@ module Relspec
       package = input.fetch(:package)
       Debian::SourcePackage.new(
         input: input, version: decision.version, digest: work.digest, checkout: checkout_of(package),
-        overlay: work.overlay, orig_cache: File.join(@out, @effective.release, ".orig"),
+        overlay: work.overlay, orig_cache: @tree.orig_cache,
         substitutions: { "@RELSPEC_INSTALL_DIR@" => input[:install_dir], "@RELSPEC_RELEASE@" => @effective.release,
                          "@RELSPEC_PACKAGE@" => input[:deb_name] }
       )
@@ -153,9 +156,8 @@ module Relspec
     # Leftovers of compiles that were killed: removed before this one
     # writes, so that the tree ends as a clean compile's would.
     def sweep_temporaries
-      release = File.join(@out, @effective.release)
-      orig = File.join(release, ".orig")
-      [*Dir.glob(File.join(release, "*/")), *Dir.glob(File.join(orig, "*/")), orig].each do |dir|
+      orig = @tree.orig_cache
+      [*Dir.glob(File.join(@tree.release_dir, "*/")), *Dir.glob(File.join(orig, "*/")), orig].each do |dir|
         Temporaries.sweep(dir)
       end
     end
@@ -178,20 +180,15 @@ module Relspec
             "dsc" => "#{decision.deb_name}/#{Debian::Naming.dsc(decision.deb_name, decision.version)}",
             "build_depends" => needs }
         end
-        dir = File.join(@out, @effective.release, "#{target.codename}-#{target.arch}")
-        FileUtils.mkdir_p(dir)
-        AtomicFile.update(File.join(dir, "plan.yml"),
+        FileUtils.mkdir_p(@tree.target_dir(target))
+        AtomicFile.update(@tree.plan_file(target),
                          Yaml::Writer.dump("release" => plan.release, "target" => target.to_s, "builds" => entries))
       end
     end
 
     def write_osdeps(plan)
-      files = Osdeps::Renderer.render(plan, @effective.distributions)
-      dir = File.join(File.dirname(@planned.lock_path), "osdeps")
-      FileUtils.mkdir_p(dir)
-      files.count do |arch, text|
-        AtomicFile.update(File.join(dir, Osdeps::Renderer.file_name(@effective.release, arch)), text)
-      end
+      dir = Project.new(@planned.project_root).osdeps_dir(@effective.release)
+      Osdeps::Files.write_release(plan, @effective, dir).changed_count
     end
   end
 end

@@ -3,7 +3,7 @@
 require_relative "release_spec"
 require_relative "catalog/release_catalog"
 require_relative "catalog/cache"
-require_relative "display_path"
+require_relative "project"
 require_relative "plan/target"
 require_relative "plan/ancestor"
 require_relative "plan/inventory"
@@ -73,7 +73,7 @@ module Relspec
     # The folder above the spec's folder (where releases/ and overlays/ are),
     # as the user would write it.
     def self.project_root(path)
-      DisplayPath.of(File.dirname(File.dirname(File.expand_path(path))))
+      Project.of_spec(path).root
     end
 
     # The lock, strictly read: one that cannot be read stops the run unless

@@ -23,7 +23,7 @@ module Relspec
 
       def call
         planned = Plan.compute(@path, timeout: @timeout)
-        only = Plan::Target.select(@target, planned.plan.targets.keys, planned.plan.release)
+        only = Target.select(@target, planned.plan.targets.keys, planned.plan.release)
         client = Availability::LaunchpadClient.new(base: @launchpad_url, timeout: @timeout)
         report = Availability.check(planned, mode: @source, launchpad: client, only: only, timeout: @timeout,
                                              concurrency: @concurrency)

@@ -2,8 +2,6 @@
 
 require "thor"
 require_relative "checked_options"
-require "fileutils"
-require_relative "../atomic_file"
 require_relative "../error"
 
 module Relspec
@@ -32,19 +30,14 @@ module Relspec
       option :timeout, type: :numeric, default: 10, desc: "HTTP timeout in seconds"
       def render(path)
         require_relative "../plan"
-        require_relative "../osdeps/renderer"
+        require_relative "../project"
+        require_relative "../osdeps/files"
         result = Plan.compute(path, timeout: options[:timeout])
         effective = result.resolution.effective
-        present, missing = presence(result)
-        files = Osdeps::Renderer.render(result.plan, effective.distributions, present: present)
-        dir = File.join(File.dirname(result.lock_path), "osdeps")
-        FileUtils.mkdir_p(dir)
-        files.each do |arch, text|
-          target = File.join(dir, Osdeps::Renderer.file_name(effective.release, arch))
-          changed = AtomicFile.update(target, text)
-          $stderr.puts("#{changed ? 'wrote' : 'unchanged'} #{target}")
-        end
-        missing.each { |line| $stderr.puts("missing from the repository: #{line}") }
+        dir = Project.new(result.project_root).osdeps_dir(effective.release)
+        written = Osdeps::Files.write_release(result.plan, effective, dir, held_only: options[:from_repository])
+        written.written.each { |target, changed| $stderr.puts("#{changed ? 'wrote' : 'unchanged'} #{target}") }
+        written.missing.each { |line| $stderr.puts("missing from the repository: #{line}") }
       end
 
       desc "index", "Write releases/releases.yml, the release index of the rock-osdeps package set"
@@ -54,14 +47,15 @@ module Relspec
       def index
         require_relative "../release_spec"
         require_relative "../osdeps/release_index"
+        require_relative "../osdeps/files"
+        require_relative "../project"
         library = ReleaseSpec::Library.new(options[:specs])
         raise Error, "#{options[:specs]}/ holds no release spec" if library.names.empty?
 
         releases = library.paths.map { |path| ReleaseSpec.resolve(path).effective }
         text = Osdeps::ReleaseIndex.render(releases, repo_url: options[:repo_url], public_key: options[:public_key])
-        target = File.join(File.dirname(options[:specs]), "releases", "releases.yml").delete_prefix("./")
-        FileUtils.mkdir_p(File.dirname(target))
-        $stderr.puts("#{AtomicFile.update(target, text) ? 'wrote' : 'unchanged'} #{target}")
+        target = Project.new(File.dirname(options[:specs])).release_index
+        $stderr.puts("#{Osdeps::Files.write_index(target, text) ? 'wrote' : 'unchanged'} #{target}")
       end
 
       desc "select", "Apply a user's deb_blacklist.yml: write rock-osdeps.osdeps and rock-osdeps.inactive"
@@ -85,18 +79,6 @@ module Relspec
       def select
         require_relative "select_command"
         SelectCommand.new(options, err: $stderr).call
-      end
-
-      private
-
-      # With --from-repository, a filter keeping what the repositories hold,
-      # and the planned packages that are missing.
-      def presence(_result)
-        return [->(_target, _decision) { true }, []] unless options[:from_repository]
-
-        require_relative "../osdeps/repository_presence"
-        presence = Osdeps::RepositoryPresence.new
-        [presence.to_proc, presence.missing]
       end
     end
   end

@@ -34,7 +34,7 @@ module Relspec
       private
 
       def selected_targets(plan)
-        Plan::Target.select(@target, plan.targets.keys, plan.release)
+        Target.select(@target, plan.targets.keys, plan.release)
       end
 
       def render(report)

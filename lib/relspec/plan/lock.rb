@@ -3,6 +3,7 @@
 require "digest"
 require "json"
 require_relative "history"
+require_relative "../project"
 
 module Relspec
   module Plan
@@ -79,7 +80,7 @@ module Relspec
       private_class_method :entry_of, :history_with, :ancestors_of
 
       def self.path(root, release)
-        root == "." ? File.join("releases", release, "lock.yml") : File.join(root, "releases", release, "lock.yml")
+        Project.new(root).lock_path(release)
       end
 
       # The digest of what the spec means (its effective values), so a lock

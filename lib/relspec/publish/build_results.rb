@@ -4,6 +4,7 @@ require_relative "../yaml/located_document"
 require_relative "../apt/version"
 require_relative "../diagnostic"
 require_relative "../error"
+require_relative "../output_tree"
 
 module Relspec
   module Publish
@@ -38,10 +39,10 @@ module Relspec
       attr_reader :path, :release, :target, :entries
 
       def self.path(out, release, target)
-        File.join(out, release, "#{target.codename}-#{target.arch}", FILE_NAME)
+        OutputTree.new(out, release).results_file(target)
       end
 
-      # The results at +path+, for +release+ and +target+ (a Plan::Target).
+      # The results at +path+, for +release+ and +target+ (a Target).
       def self.read(path, release:, target:)
         new(Yaml::LocatedDocument.load(path), release, target)
       end
