@@ -3,6 +3,7 @@
 require_relative "plan"
 require_relative "availability"
 require_relative "debian/source_package"
+require_relative "debian/emitter"
 require_relative "debian/naming"
 require_relative "osdeps/files"
 require_relative "output_tree"
@@ -57,12 +58,13 @@ module Relspec
       @catalog = @planned.release_catalog.catalog
       plan = @planned.plan
       jobs, published = jobs_of(plan)
-      written, unchanged, repaired = emit(jobs)
+      sweep_temporaries
+      emitted = Debian::Emitter.new(jobs: @jobs, progress: @progress).call(jobs)
       write_build_plans(plan)
       lock_changed = @planned.write_lock
-      Result.new(release: @effective.release, written: written, unchanged: unchanged, published: published,
+      Result.new(release: @effective.release, written: emitted.written, unchanged: emitted.unchanged, published: published,
                  lock_path: @planned.lock_path, lock_changed: lock_changed, osdeps_written: write_osdeps(plan),
-                 unchecked: availability ? availability.unchecked : [], repaired: repaired)
+                 unchecked: availability ? availability.unchecked : [], repaired: emitted.repaired)
     end
 
     private
@@ -117,42 +119,6 @@ module Relspec
       package.source_dir && File.join(@planned.release_catalog.workspace, package.source_dir)
     end
 
-    def emit(jobs)
-      sweep_temporaries
-      queue = Queue.new
-      jobs.each { |job| queue << job }
-      written = []
-      unchanged = []
-      errors = []
-      repaired = []
-      lock = Mutex.new
-      failures = []
-      Array.new([@jobs, jobs.size].min) do
-        Thread.new do
-          Thread.current.report_on_exception = false
-          while (job = next_job(queue))
-            dir, package = job
-            begin
-              changed = package.emit(dir)
-              lock.synchronize do
-                (changed ? written : unchanged) << dir
-                repaired.concat(package.repaired)
-                @progress&.call(written.size + unchanged.size, jobs.size)
-              end
-            rescue InvalidInput => e
-              lock.synchronize { errors.concat(e.diagnostics) }
-            rescue StandardError => e # re-raised below, in the main thread, where errors become messages
-              lock.synchronize { failures << e }
-            end
-          end
-        end
-      end.each(&:join)
-      raise failures.first unless failures.empty?
-      raise InvalidInput, errors unless errors.empty?
-
-      [written.sort, unchanged.sort, repaired.uniq.sort]
-    end
-
     # Leftovers of compiles that were killed: removed before this one
     # writes, so that the tree ends as a clean compile's would.
     def sweep_temporaries
@@ -160,12 +126,6 @@ module Relspec
       [*Dir.glob(File.join(@tree.release_dir, "*/")), *Dir.glob(File.join(orig, "*/")), orig].each do |dir|
         Temporaries.sweep(dir)
       end
-    end
-
-    def next_job(queue)
-      queue.pop(true)
-    rescue ThreadError
-      nil
     end
 
     # <out>/<release>/<codename>-<arch>/plan.yml: the builds in dependency

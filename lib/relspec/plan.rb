@@ -15,7 +15,7 @@ require_relative "plan/settlement"
 require_relative "plan/gem_check"
 
 module Relspec
-  # The release plan (DESIGN §3, §4): for every target and package, inherit,
+  # The release plan (docs/plan.md): for every target and package, inherit,
   # build or published, with causes; recorded in releases/<r>/lock.yml.
   module Plan
     # Everything one planning run produced. +lock+: the lock of this plan
@@ -68,6 +68,12 @@ module Relspec
       Result.new(resolution: resolution, plan: plan, lock: Lock.from_plan(plan, spec_digest, previous&.history || History.empty),
                  previous: previous, lock_path: lock_path, spec_digest: spec_digest, own: own,
                  release_catalog: release_catalog, ancestors: ancestors, work: work, project_root: root)
+    end
+
+    # The use case's entry, shaped as Compile.run, Builder.run, Publish.run,
+    # Availability.run and Diff.run: what the CLI calls.
+    def self.run(path, **options)
+      compute(path, **options)
     end
 
     # The folder above the spec's folder (where releases/ and overlays/ are),

@@ -32,7 +32,7 @@ module Relspec
         require_relative "../plan"
         require_relative "../project"
         require_relative "../osdeps/files"
-        result = Plan.compute(path, timeout: options[:timeout])
+        result = Plan.run(path, timeout: options[:timeout])
         effective = result.resolution.effective
         dir = Project.new(result.project_root).osdeps_dir(effective.release)
         written = Osdeps::Files.write_release(result.plan, effective, dir, held_only: options[:from_repository])

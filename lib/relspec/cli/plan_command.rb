@@ -21,7 +21,7 @@ module Relspec
       end
 
       def call
-        result = Plan.compute(@path, timeout: @timeout, discard_lock: @discard_lock)
+        result = Plan.run(@path, timeout: @timeout, discard_lock: @discard_lock)
         DiscardedLock.warn(result, @err)
         plan = result.plan
         targets = selected_targets(plan)

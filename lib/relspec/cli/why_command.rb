@@ -16,7 +16,7 @@ module Relspec
       end
 
       def call
-        plan = Plan.compute(@path, timeout: @timeout).plan
+        plan = Plan.run(@path, timeout: @timeout).plan
         targets = Target.select(@target, plan.targets.keys.sort_by(&:to_s), plan.release)
         unless plan.packages.key?(@package)
           hint = Suggestion.hint(@package, plan.packages.keys)

@@ -7,7 +7,7 @@ require_relative "../project"
 
 module Relspec
   module Plan
-    # releases/<release>/lock.yml (DESIGN §6, §12) as a value: what a plan
+    # releases/<release>/lock.yml (docs/plan.md, The lock file) as a value: what a plan
     # decided, what it read to decide it, and the history of every build the
     # release has made. LockGenerator writes it and LockParser reads it back,
     # each the mirror of the other (as Bundler's LockfileGenerator and
