@@ -54,7 +54,9 @@ module Relspec
       @tree = OutputTree.new(@out, @effective.release)
       require_maintainer
       require_workspace
-      availability = @check ? Availability.guard(@planned, timeout: @timeout, **(@check.is_a?(Hash) ? @check : {})) : nil
+      availability = if @check
+                       Availability.guard(@planned, timeout: @timeout, **(@check.is_a?(Hash) ? @check : {}))
+                     end
       @catalog = @planned.release_catalog.catalog
       plan = @planned.plan
       jobs, published = jobs_of(plan)
@@ -142,7 +144,7 @@ module Relspec
         end
         FileUtils.mkdir_p(@tree.target_dir(target))
         AtomicFile.update(@tree.plan_file(target),
-                         Yaml::Writer.dump("release" => plan.release, "target" => target.to_s, "builds" => entries))
+                          Yaml::Writer.dump("release" => plan.release, "target" => target.to_s, "builds" => entries))
       end
     end
 

@@ -49,7 +49,7 @@ module Relspec
       targets = Target.all(effective)
       gem_distribution = nil
       gem_archives = lambda do
-        gem_distribution ||= read_distribution(resolution, /\Aruby-/, targets, fetcher_options, cache)
+        gem_distribution ||= read_distribution(resolution, Debian::Naming::DISTRIBUTION_GEMS, targets, fetcher_options, cache)
         targets.to_h { |target| [target.to_s, gem_distribution.index(target)] }
       end
       release_catalog = Catalog::ReleaseCatalog.load(resolution, cache: catalog_cache, gem_fetch: gem_fetch, timeout: timeout,
@@ -122,7 +122,7 @@ module Relspec
       origin = effective.origin("distributions")
       location = origin&.location || resolution.spec_file.location(["release"])
       DistributionPackages.read(effective.distributions, targets, wanted, spec_dir: File.dirname(resolution.spec_file.path),
-                                                                           location: location, fetcher_options: fetcher_options, cache: cache)
+                                                                          location: location, fetcher_options: fetcher_options, cache: cache)
     end
 
     def self.read_own(resolution, targets, fetcher_options, cache)

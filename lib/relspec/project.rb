@@ -16,7 +16,7 @@ module Relspec
     # The project of the spec file at +spec_path+: the folder above the
     # spec's folder.
     def self.of_spec(spec_path)
-      new(DisplayPath.of(File.dirname(File.dirname(File.expand_path(spec_path)))))
+      new(DisplayPath.of(File.dirname(File.expand_path(spec_path), 2)))
     end
 
     def initialize(root)

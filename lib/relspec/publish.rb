@@ -7,7 +7,7 @@ require_relative "atomic_file"
 require_relative "diagnostic"
 require_relative "osdeps/files"
 require_relative "output_tree"
-require_relative "publish/build_results"
+require_relative "builder/build_results"
 require_relative "publish/repository_config"
 require_relative "publish/repository_lock"
 require_relative "publish/upload"
@@ -38,8 +38,10 @@ module Relspec
       all = Target.all(effective)
       selected = Target.select(target, all, effective.release)
       results = selected.to_h { |one| [one, read_results(tree, one, explicit: !target.nil?)] }
-      raise PublishError, "nothing to publish: no target of #{effective.release} has a build-results.yml under " \
-                          "#{tree.release_dir} (run relspec build first)" if results.values.none?
+      if results.values.none?
+        raise PublishError, "nothing to publish: no target of #{effective.release} has a build-results.yml under " \
+                            "#{tree.release_dir} (run relspec build first)"
+      end
 
       uploads = results.to_h { |one, read| [one, read ? read.built.map { |entry| Upload.of(entry, File.dirname(read.path), read.path) } : []] }
       sign_with = effective.repository.sign_with
@@ -68,7 +70,7 @@ module Relspec
     def self.read_results(tree, target, explicit:)
       path = tree.results_file(target)
       release = tree.release
-      return BuildResults.read(path, release: release, target: target) if File.exist?(path)
+      return Builder::BuildResults.read(path, release: release, target: target) if File.exist?(path)
       raise PublishError, "#{target} of #{release} has not been built: #{path} does not exist (run relspec build)" if explicit
 
       nil

@@ -17,7 +17,7 @@ RSpec.describe Relspec::Target do
   it "parses codename/arch and refuses anything else" do
     expect(described_class.parse("bookworm/amd64")).to eq(described_class.new("bookworm", "amd64"))
     ["bookworm", "/amd64", "bookworm/", "", nil].each do |text|
-      expect { described_class.parse(text) }.to raise_error(Relspec::InvalidOption, /codename\/arch/)
+      expect { described_class.parse(text) }.to raise_error(Relspec::InvalidOption, %r{codename/arch})
     end
   end
 

@@ -1,9 +1,12 @@
 # frozen_string_literal: true
 
 require "fileutils"
+require "open3"
+require "shellwords"
 require_relative "../error"
 require_relative "../cache_dir"
 require_relative "../temporaries"
+require_relative "emulation"
 
 module Relspec
   module Builder
@@ -25,7 +28,9 @@ module Relspec
 
       # +distribution+: ReleaseSpec::Distribution of the codename; +os_release+:
       # the host's /etc/os-release (read to know the host's own codename).
-      def initialize(target, distribution, tool, cache_dir: CacheDir.for("chroots"), os_release: "/etc/os-release")
+      # +emulation+: checks that this machine runs the target's binaries.
+      def initialize(target, distribution, tool, cache_dir: CacheDir.for("chroots"), os_release: "/etc/os-release",
+                     emulation: Emulation.new(Chroot.host_arch))
         @target = target
         @distribution = distribution
         @tool = tool
@@ -33,6 +38,13 @@ module Relspec
 
         @path = File.join(cache_dir, "#{target.dir_name}.tar.zst")
         @os_release = os_release
+        @emulation = emulation
+      end
+
+      # This machine's Debian architecture.
+      def self.host_arch
+        output, status = Open3.capture2("dpkg", "--print-architecture")
+        status.success? ? output.strip : "amd64"
       end
 
       def exist?
@@ -44,15 +56,14 @@ module Relspec
       def ensure(log)
         return false if exist?
 
+        @emulation.check(@target.arch)
         mirrors = mirrors_or_raise
         FileUtils.mkdir_p(File.dirname(@path))
         # a killed mmdebstrap leaves hundreds of MB behind
         Temporaries.sweep(File.dirname(@path))
         partial = Temporaries.path(File.dirname(@path), File.basename(@path, ".tar.zst"), suffix: ".tar.zst")
         begin
-          @tool.run("chroot #{@target}", ["mmdebstrap", "--variant=buildd", "--mode=unshare", "--arch=#{@target.arch}",
-                                          "--include=#{INCLUDE.join(',')}",
-                                          *components_option, @target.codename, partial, *mirrors], log: log)
+          @tool.run("chroot #{@target}", command(partial, mirrors), log: log)
           File.rename(partial, @path)
         ensure
           FileUtils.rm_f(partial)
@@ -60,7 +71,22 @@ module Relspec
         true
       end
 
+      # Shell lines that make the tarball where it is missing (a Slurm
+      # chroot-prepare job, on a node of the target's architecture).
+      def job_steps
+        # mmdebstrap picks the format by the name's ending
+        partial = File.join(File.dirname(@path), ".#{File.basename(@path, '.tar.zst')}.partial.tar.zst")
+        ["if [ ! -f #{Shellwords.escape(@path)} ]; then mkdir -p #{Shellwords.escape(File.dirname(@path))} && " \
+         "#{Shellwords.join(command(partial, mirrors_or_raise))} && mv #{Shellwords.escape(partial)} " \
+         "#{Shellwords.escape(@path)}; fi"]
+      end
+
       private
+
+      def command(partial, mirrors)
+        ["mmdebstrap", "--variant=buildd", "--mode=unshare", "--arch=#{@target.arch}", "--include=#{INCLUDE.join(',')}",
+         *components_option, @target.codename, partial, *mirrors]
+      end
 
       def archive
         @distribution&.archive || {}

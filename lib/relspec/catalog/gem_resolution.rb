@@ -187,7 +187,11 @@ module Relspec
 
       def unresolvable(name, listed)
         asked = @requests[name].map { |requirement, who| "#{who} (#{requirement})" }.join(", ")
-        there = listed.empty? ? "it has none" : "it has #{listed.first(5).join(', ')}#{listed.size > 5 ? ', …' : ''}"
+        there = if listed.empty?
+                  "it has none"
+                else
+                  "it has #{listed.first(5).join(', ')}#{', …' if listed.size > 5}"
+                end
         Diagnostic.error("gem-unresolvable", "no version of gem #{name} in #{@versions.where} fits what is asked: " \
                                              "#{asked}; #{there}",
                          location: @location, hint: "add a fitting #{name} to gem_source, or pin one with gems:")
@@ -209,8 +213,8 @@ module Relspec
 
         @problems << Diagnostic.error("gem-cycle", "gems #{cycle.join(' → ')} need each other: no build order makes " \
                                                    "their packages", location: @location,
-                                                   hint: "take one of them from the distribution (its archive), or " \
-                                                         "package them by hand")
+                                                                     hint: "take one of them from the distribution (its archive), or " \
+                                                                           "package them by hand")
       end
 
       def cycle_from(name, edges, path)
@@ -226,7 +230,7 @@ module Relspec
 
       def notes
         unchecked = @archives.select { |_, found| found.nil? }.keys.sort
-        asked = @requests.keys - @pinned.keys - @chosen.select { |_, version| version != :system }.keys
+        asked = @requests.keys - @pinned.keys - @chosen.reject { |_, version| version == :system }.keys
         return [] if unchecked.empty? || asked.empty?
 
         ["gem osdeps are not checked on #{unchecked.join(', ')} (no distribution archive: " \

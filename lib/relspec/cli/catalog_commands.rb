@@ -1,12 +1,15 @@
 # frozen_string_literal: true
 
 require "thor"
+require_relative "strict_commands"
 require "json"
 
 module Relspec
   module CLI
     # `relspec catalog …`: the package database of a workspace.
     class CatalogCommands < Thor
+      include StrictCommands
+
       namespace "catalog"
 
       def self.exit_on_failure?
@@ -45,7 +48,7 @@ module Relspec
 
       private
 
-      def as_json(release, selections)
+      def as_json(_release, selections)
         selections.to_h do |codename, selection|
           [codename, selection.packages.to_h { |package| [package.name, package.to_h.slice("build_type", "vcs", "commit_time", "version")] }]
         end

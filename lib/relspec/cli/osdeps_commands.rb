@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require "thor"
+require_relative "strict_commands"
 require_relative "checked_options"
 require_relative "../error"
 
@@ -10,9 +11,9 @@ module Relspec
     # release's binaries (rock-osdeps package set format).
     class OsdepsCommands < Thor
       include CheckedOptions
+      include StrictCommands
 
       namespace "osdeps"
-
 
       def self.exit_on_failure?
         true

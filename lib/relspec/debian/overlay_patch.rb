@@ -30,7 +30,7 @@ module Relspec
         return nil if hunks.empty?
 
         "Description: files of overlays/#{package_name}/files over the upstream tree\n" \
-          "Forwarded: not-needed\n---\n".b + hunks.join.b
+        "Forwarded: not-needed\n---\n".b + hunks.join.b
       end
 
       def file_diff(path, old, new)

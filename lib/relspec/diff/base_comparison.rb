@@ -75,13 +75,13 @@ module Relspec
         raise Error, "#{shown(spec_path)} does not exist" unless File.file?(full_spec)
 
         snapshot = if File.file?(full_lock)
-                     LockView.parse(File.read(full_lock), source: shown(lock_path))
+                     LockView.parse(Input.text_of(full_lock), source: shown(lock_path))
                    elsif plan
                      LockView.snapshot(@planner.call(full_spec), source: shown(spec_path))
                    else
                      Snapshot.empty(name, shown(spec_path))
                    end
-        snapshot.with_spec(Input.spec_data(File.read(full_spec), shown(spec_path)), spec_dir: File.dirname(full_spec))
+        snapshot.with_spec(Input.spec_data(Input.text_of(full_spec), shown(spec_path)), spec_dir: File.dirname(full_spec))
       end
     end
   end

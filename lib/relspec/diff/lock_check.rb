@@ -75,7 +75,7 @@ module Relspec
       end
 
       def without_depends(targets)
-        targets.transform_values { |entries| entries.transform_values { |entry| entry.reject { |key, _| key == "depends" } } }
+        targets.transform_values { |entries| entries.transform_values { |entry| entry.except("depends") } }
       end
     end
   end

@@ -16,10 +16,9 @@ module Relspec
         @effective = effective
         @ancestors = ancestors.to_h { |ancestor| [ancestor.name, ancestor] }
         @release_catalog = release_catalog
-        # install folders by where a package comes from: asked once per
-        # package of every closure, so computed once
+        # install folders by where a package comes from: every dependent
+        # asks, so computed once
         @install_dirs = {}
-        @closures = Hash.new { |hash, target| hash[target] = {} }
       end
 
       # +decisions+: the target's decisions, those of dependencies settled.
@@ -30,7 +29,7 @@ module Relspec
           package: package, deb_name: decision.deb_name, upstream: upstream, codename: target.codename,
           release: @effective.release, maintainer: @effective.maintainer, install_dir: install_dir_of(decision),
           debhelper_compat: @effective.distributions.fetch(target.codename).debhelper_compat,
-          dependencies: dependencies_of(package, decisions), closure: closure_dirs(target, package, decisions), apt: os.apt,
+          dependencies: dependencies_of(package, decisions), apt: os.apt,
           gems: Debian::ControlRelations.distribution_gems(os, @release_catalog.gems.keys),
           gem: @release_catalog.gems[package.name]
         }
@@ -67,25 +66,6 @@ module Relspec
         dependency_names(package, decisions).map do |name|
           decision = decisions[name]
           { deb_name: decision.deb_name, version: decision.version.to_s, install_dir: install_dir_of(decision) }
-        end
-      end
-
-      # The prefixes of the whole dependency closure, own and inherited, each
-      # once: the direct dependencies by name, then each one's closure in
-      # that order. A dependency's CMake configuration or pkg-config file
-      # names its own dependencies, which the build must find too. Memoised
-      # per target: where a package installs is decided before versions are,
-      # so it does not change while the target's builds are settled.
-      def closure_dirs(target, package, decisions)
-        memo = @closures[target]
-        memo.fetch(package.name) do
-          direct = package.build_dependencies.filter_map { |name| decisions[name] && [name, decisions[name]] }
-          dirs = direct.filter_map { |_, decision| install_dir_of(decision) }
-          direct.each do |name, _|
-            dirs.concat(closure_dirs(target, @release_catalog.catalog.package(name), decisions)) if
-              @release_catalog.catalog.package?(name)
-          end
-          memo[package.name] = dirs.uniq.freeze
         end
       end
 

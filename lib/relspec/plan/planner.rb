@@ -204,7 +204,7 @@ module Relspec
         end
       end
 
-      def built(package, target, cause)
+      def built(package, _target, cause)
         deb = deb_name(package, @effective.prefixes.package_prefix, @effective.release)
         unless upstream(package)
           raise InvalidInput, [Diagnostic.error("unknown-commit-time",
@@ -290,12 +290,12 @@ module Relspec
         entries = @effective.blacklist.map { |entry| [entry.pattern, entry.reason, entry.index] }
         unmatched = entries.reject { |pattern, _, _| @catalog.packages.keys.any? { |name| pattern.match?(name) } }
         unless unmatched.empty?
-          raise InvalidInput, unmatched.map { |pattern, _, index|
+          raise(InvalidInput, unmatched.map do |pattern, _, index|
             Diagnostic.error("unmatched-blacklist", "blacklist entry #{pattern.source.inspect} matches no package " \
                                                     "of the workspace",
                              location: @spec_file.location(["blacklist", index]),
                              hint: "check the name, or remove the entry")
-          }
+          end)
         end
         entries
       end

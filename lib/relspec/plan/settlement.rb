@@ -58,8 +58,8 @@ module Relspec
         result = @versioning.settle(target: target, package: package.name, deb_name: decision.deb_name,
                                     upstream: upstream, digest: digest)
         final = Decision.new(**decision.each_pair.to_h, kind: result.published ? :published : :build,
-                             version: result.version, debian_digest: digest,
-                             depends: @inputs.dependency_names(package, decisions).uniq.sort.freeze)
+                                                        version: result.version, debian_digest: digest,
+                                                        depends: @inputs.dependency_names(package, decisions).uniq.sort.freeze)
                         .freeze
         [final, Work.new(input: input, overlay: overlay, digest: digest).freeze]
       end

@@ -85,7 +85,7 @@ module Relspec
           known = BUILTIN[codename]
           [codename, Distribution.define(codename, definition["type"] || known&.type,
                                          definition["labels"] || known&.labels || [], archive: definition["archive"],
-                                         debhelper_compat: definition["debhelper_compat"] || known&.debhelper_compat ||
+                                                                                      debhelper_compat: definition["debhelper_compat"] || known&.debhelper_compat ||
                                                            DEFAULT_DEBHELPER_COMPAT, ruby: known&.ruby)]
         end
         BUILTIN.merge(own).freeze

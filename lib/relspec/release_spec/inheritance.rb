@@ -17,7 +17,7 @@ module Relspec
     class Inheritance
       OWN = %w[release description parent workspace select blacklist repository external].freeze
       INHERITED = %w[targets install_prefix separate_prefixes package_prefix maintainer distributions gems
-                   gem_source].freeze
+                     gem_source].freeze
       # Keys an external release may set for its descendants.
       EXTERNAL_KEYS = %w[targets install_prefix separate_prefixes package_prefix].freeze
 

@@ -16,11 +16,11 @@ RSpec.describe Relspec::Catalog::AutoprojMessages do
        "  WARN: osdeps definition for cmake overridden:", "  WARN:   resp. apt-dpkg: cmake3"].each { |line| messages.add(line) }
     end
     expect(messages.to_s).to eq(<<~TEXT)
-      \  WARN: osdeps definition for cmake overridden:
-      \  WARN:   resp. apt-dpkg: cmake
-      \  WARN: other
-      \  WARN: osdeps definition for cmake overridden:
-      \  WARN:   resp. apt-dpkg: cmake3
+      WARN: osdeps definition for cmake overridden:
+      WARN:   resp. apt-dpkg: cmake
+      WARN: other
+      WARN: osdeps definition for cmake overridden:
+      WARN:   resp. apt-dpkg: cmake3
     TEXT
   end
 

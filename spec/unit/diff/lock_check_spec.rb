@@ -9,7 +9,7 @@ RSpec.describe Relspec::Diff::LockCheck do
   def lock(**changes)
     entry = { "decision" => "build", "deb" => "rock-r-a", "version" => "1-1~bookworm", "depends" => ["rock-r-b"] }
     Struct.new(:to_h).new({ "spec_digest" => "s", "ancestors" => {}, "packages" => { "a" => {} }, "history" => {},
-                 "warnings" => [], "notes" => [], "targets" => { "bookworm/amd64" => { "a" => entry } } }.merge(changes))
+                            "warnings" => [], "notes" => [], "targets" => { "bookworm/amd64" => { "a" => entry } } }.merge(changes))
   end
 
   it "names each section that moved" do
