@@ -3,6 +3,8 @@
 require "fileutils"
 require_relative "release_spec"
 require_relative "error"
+require_relative "target"
+require_relative "output_tree"
 require_relative "builder/build_plan"
 require_relative "builder/build_results"
 require_relative "builder/request"
@@ -70,12 +72,14 @@ module Relspec
         resolution = ReleaseSpec.resolve(@path)
         @effective = resolution.effective
         backend = make_backend
-        selected_targets.map do |target|
-          dir = File.expand_path(File.join(@out, @effective.release, "#{target.codename}-#{target.arch}"))
+        tree = OutputTree.new(@out, @effective.release)
+        Target.select(@only, Target.all(@effective), @effective.release).map do |target|
+          dir = File.expand_path(tree.target_dir(target))
           plan = BuildPlan.read(dir)
-          FileUtils.mkdir_p(File.join(dir, "logs"))
+          logs = File.expand_path(tree.logs_dir(target))
+          FileUtils.mkdir_p(logs)
           # on a cluster the chroot-prepare job of the target makes it, on a node
-          prepared = slurm? && !@prepare_only ? false : backend.prepare(target, log: File.join(dir, "logs", "prepare.log"))
+          prepared = slurm? && !@prepare_only ? false : backend.prepare(target, log: File.join(logs, "prepare.log"))
           next TargetReport.new(target: target, dir: dir, outcomes: [], reused: 0, prepared: prepared) if @prepare_only
 
           build_target(target, dir, plan, backend, Repositories.of(resolution, target.codename), prepared)
@@ -104,16 +108,6 @@ module Relspec
       def shared_chroots
         folder = slurm? && @slurm_settings["shared_folder"]
         folder ? File.join(File.expand_path(folder), "chroots") : nil
-      end
-
-      def selected_targets
-        all = @effective.targets.flat_map { |codename, arches| Array(arches).map { |arch| Target.new(codename, arch) } }
-        return all if @only.nil? || @only.empty?
-
-        @only.uniq.map do |name|
-          all.find { |target| target.to_s == name } or
-            raise InvalidOption, "#{@effective.release} has no target #{name} (targets: #{all.join(', ')})"
-        end
       end
 
       def build_target(target, dir, plan, backend, repositories, prepared)

@@ -3,7 +3,7 @@
 require_relative "release_spec"
 require_relative "catalog/release_catalog"
 require_relative "catalog/cache"
-require_relative "display_path"
+require_relative "project"
 require_relative "plan/target"
 require_relative "plan/ancestor"
 require_relative "plan/inventory"
@@ -15,7 +15,7 @@ require_relative "plan/settlement"
 require_relative "plan/gem_check"
 
 module Relspec
-  # The release plan (DESIGN §3, §4): for every target and package, inherit,
+  # The release plan (docs/plan.md): for every target and package, inherit,
   # build or published, with causes; recorded in releases/<r>/lock.yml.
   module Plan
     # Everything one planning run produced. +lock+: the lock of this plan
@@ -70,10 +70,16 @@ module Relspec
                  release_catalog: release_catalog, ancestors: ancestors, work: work, project_root: root)
     end
 
+    # The use case's entry, shaped as Compile.run, Builder.run, Publish.run,
+    # Availability.run and Diff.run: what the CLI calls.
+    def self.run(path, **options)
+      compute(path, **options)
+    end
+
     # The folder above the spec's folder (where releases/ and overlays/ are),
     # as the user would write it.
     def self.project_root(path)
-      DisplayPath.of(File.dirname(File.expand_path(path), 2))
+      Project.of_spec(path).root
     end
 
     # The lock, strictly read: one that cannot be read stops the run unless

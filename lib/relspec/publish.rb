@@ -5,8 +5,8 @@ require_relative "release_spec"
 require_relative "plan"
 require_relative "atomic_file"
 require_relative "diagnostic"
-require_relative "osdeps/renderer"
-require_relative "osdeps/repository_presence"
+require_relative "osdeps/files"
+require_relative "output_tree"
 require_relative "builder/build_results"
 require_relative "publish/repository_config"
 require_relative "publish/repository_lock"
@@ -34,12 +34,13 @@ module Relspec
       resolution = ReleaseSpec.resolve(path)
       effective = resolution.effective
       repository = repository_path(resolution)
-      all = Plan::Target.all(effective)
-      selected = Plan::Target.select(target, all, effective.release)
-      results = selected.to_h { |one| [one, read_results(out, effective.release, one, explicit: !target.nil?)] }
+      tree = OutputTree.new(out, effective.release)
+      all = Target.all(effective)
+      selected = Target.select(target, all, effective.release)
+      results = selected.to_h { |one| [one, read_results(tree, one, explicit: !target.nil?)] }
       if results.values.none?
         raise PublishError, "nothing to publish: no target of #{effective.release} has a build-results.yml under " \
-                            "#{File.join(out, effective.release)} (run relspec build first)"
+                            "#{tree.release_dir} (run relspec build first)"
       end
 
       uploads = results.to_h { |one, read| [one, read ? read.built.map { |entry| Upload.of(entry, File.dirname(read.path), read.path) } : []] }
@@ -66,8 +67,9 @@ module Relspec
 
     # The target's results, nil when it has none (an error when the user
     # asked for that target).
-    def self.read_results(out, release, target, explicit:)
-      path = Builder::BuildResults.path(out, release, target)
+    def self.read_results(tree, target, explicit:)
+      path = tree.results_file(target)
+      release = tree.release
       return Builder::BuildResults.read(path, release: release, target: target) if File.exist?(path)
       raise PublishError, "#{target} of #{release} has not been built: #{path} does not exist (run relspec build)" if explicit
 
@@ -107,14 +109,9 @@ module Relspec
     # ancestors do) is listed.
     def self.write_osdeps(path, repository, timeout)
       planned = Plan.compute(path, timeout: timeout)
-      presence = Osdeps::RepositoryPresence.new
-      files = Osdeps::Renderer.render(planned.plan, planned.resolution.effective.distributions, present: presence.to_proc)
-      dir = File.join(repository, "osdeps")
-      FileUtils.mkdir_p(dir)
-      written = files.count do |arch, text|
-        AtomicFile.update(File.join(dir, Osdeps::Renderer.file_name(planned.resolution.effective.release, arch)), text)
-      end
-      [written, presence.missing]
+      written = Osdeps::Files.write_release(planned.plan, planned.resolution.effective, File.join(repository, "osdeps"),
+                                            held_only: true)
+      [written.changed_count, written.missing]
     end
     private_class_method :repository_path, :read_results, :include_targets, :write_config, :write_osdeps
   end

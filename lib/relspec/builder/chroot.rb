@@ -36,7 +36,7 @@ module Relspec
         @tool = tool
         raise BuildError, "no cache folder for chroot tarballs (set XDG_CACHE_HOME or HOME)" unless cache_dir
 
-        @path = File.join(cache_dir, "#{target.codename}-#{target.arch}.tar.zst")
+        @path = File.join(cache_dir, "#{target.dir_name}.tar.zst")
         @os_release = os_release
         @emulation = emulation
       end

@@ -9,9 +9,9 @@ require_relative "../error"
 
 module Relspec
   class Catalog
-    # Which gems the release packages without being told (DESIGN: "all
-    # external Ruby gems that are required by a package … automatically
-    # become part of the generated binary release"). A gem osdep of a
+    # Which gems the release packages without being told: every external
+    # Ruby gem a package requires becomes part of the binary release
+    # (docs/compile.md, Gem resolution). A gem osdep of a
     # selected package, and a runtime dependency of a gem the release
     # packages, is:
     #

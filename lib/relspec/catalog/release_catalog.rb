@@ -20,6 +20,15 @@ module Relspec
     class ReleaseCatalog
       attr_reader :catalog, :selections, :workspace, :gems, :gem_resolution
 
+      # The selections of the target codename +codename+ only (nil: all).
+      def selections_on(codename)
+        return selections unless codename
+        raise InvalidOption, "#{codename} is not a target codename of this release (#{selections.keys.join(', ')})" \
+          unless selections.key?(codename)
+
+        selections.slice(codename)
+      end
+
       # The selected names on one codename, with their packages, and the
       # selected packages that cannot exist there (name => Selection::Unavailable).
       Selected = Struct.new(:names, :catalog, :unavailable) do

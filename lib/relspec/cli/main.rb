@@ -9,7 +9,7 @@ require_relative "osdeps_commands"
 
 module Relspec
   module CLI
-    # The command line (DESIGN §7). Each command is a small class; this file
+    # The command line (README.md lists the commands). Each command is a small class; this file
     # only declares options and hands them over. Command classes are required
     # when their command runs, so that each command loads only what it needs.
     class Main < Thor

@@ -278,7 +278,7 @@ module Relspec
         url.match?(%r{\A(https?|git|ssh)://|\A[\w.-]+@[\w.-]+:}) ? url : nil
       end
 
-      # Packages of a release live under /opt by design (DESIGN §5): lintian
+      # Packages of a release live under /opt by design (docs/compile.md): lintian
       # names /opt/rock/, /opt/rock/<release>/ and every path of the prefix.
       # Their libraries are not on ld.so's path, so Rock's CMake gives
       # programs a RUNPATH to the release's prefixes (the only way they run

@@ -67,7 +67,7 @@ module Relspec
       # locations) as an Apt::Repository.
       def reader(entry, location, fetcher_options, cache)
         Apt::Repository.new(Apt::Fetcher.new(location, **fetcher_options), keyring: entry.keyring,
-                                                                            trusted: entry.trusted, cache: cache)
+                                                                           trusted: entry.trusted, cache: cache)
       end
     end
   end

@@ -16,7 +16,7 @@ module Relspec
   module Plan
     # Decides, for every target and every package of the release, whether it
     # is inherited from an ancestor, already published here, or built here,
-    # and why (DESIGN §4, §5):
+    # and why (docs/plan.md):
     #
     # - a package is built when it is blacklisted, pinned to a commit no
     #   ancestor has, missing in all ancestors, or when no ancestor has the

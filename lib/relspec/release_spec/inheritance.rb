@@ -6,7 +6,7 @@ require_relative "defaults"
 
 module Relspec
   module ReleaseSpec
-    # Computes a release's effective spec from its hierarchy (DESIGN §4):
+    # Computes a release's effective spec from its hierarchy (docs/spec-reference.md, Inheritance):
     #
     # - own keys never inherited: release, description, parent, workspace,
     #   select, blacklist, repository, external;

@@ -86,6 +86,6 @@ RSpec.describe "ReleaseSpec typed values" do
     expect(spec).to have_attributes(parents: ["base"], workspace: "../ws", maintainer: "M <m@example.org>", select: nil,
                                     gems: {}, gem_source: "https://rubygems.org")
     expect(effective({ "parent" => %w[a b], "gems" => { "rake" => "13.0" } })).to have_attributes(parents: %w[a b],
-                                                                                                    gems: { "rake" => "13.0" })
+                                                                                                  gems: { "rake" => "13.0" })
   end
 end

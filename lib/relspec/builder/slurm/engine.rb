@@ -78,14 +78,14 @@ module Relspec
         end
 
         def job_name(source)
-          "#{@plan.release}/#{@target.codename}-#{@target.arch}/#{source}@#{@run_id}"
+          "#{@plan.release}/#{@target.dir_name}/#{source}@#{@run_id}"
         end
 
         # The run's jobs still queued or running (an earlier relspec of this
         # run was killed): source (or "chroot") => job.
         def live_jobs
           suffix = "@#{@run_id}"
-          prefix = "#{@plan.release}/#{@target.codename}-#{@target.arch}/"
+          prefix = "#{@plan.release}/#{@target.dir_name}/"
           @cluster.queue.select { |job| job.live? && job.name.to_s.end_with?(suffix) && job.name.start_with?(prefix) }
                   .sort_by(&:id).to_h { |job| [job.name.delete_prefix(prefix).delete_suffix(suffix), job] }
         end
