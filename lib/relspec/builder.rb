@@ -8,6 +8,7 @@ require_relative "output_tree"
 require_relative "builder/build_plan"
 require_relative "builder/build_results"
 require_relative "builder/request"
+require_relative "builder/target_lock"
 require_relative "builder/repositories"
 require_relative "builder/scheduler"
 require_relative "builder/tool"
@@ -76,13 +77,15 @@ module Relspec
         Target.select(@only, Target.all(@effective), @effective.release).map do |target|
           dir = File.expand_path(tree.target_dir(target))
           plan = BuildPlan.read(dir)
-          logs = File.expand_path(tree.logs_dir(target))
-          FileUtils.mkdir_p(logs)
-          # on a cluster the chroot-prepare job of the target makes it, on a node
-          prepared = slurm? && !@prepare_only ? false : backend.prepare(target, log: File.join(logs, "prepare.log"))
-          next TargetReport.new(target: target, dir: dir, outcomes: [], reused: 0, prepared: prepared) if @prepare_only
+          TargetLock.hold(dir, "build") do
+            logs = File.expand_path(tree.logs_dir(target))
+            FileUtils.mkdir_p(logs)
+            # on a cluster the chroot-prepare job of the target makes it, on a node
+            prepared = slurm? && !@prepare_only ? false : backend.prepare(target, log: File.join(logs, "prepare.log"))
+            next TargetReport.new(target: target, dir: dir, outcomes: [], reused: 0, prepared: prepared) if @prepare_only
 
-          build_target(target, dir, plan, backend, Repositories.of(resolution, target.codename), prepared)
+            build_target(target, dir, plan, backend, Repositories.of(resolution, target.codename), prepared)
+          end
         end
       rescue Interrupt
         @tool.stop_all

@@ -9,6 +9,7 @@ require_relative "osdeps/files"
 require_relative "output_tree"
 require_relative "project"
 require_relative "yaml/writer"
+require_relative "builder/build_plan"
 require_relative "atomic_file"
 require_relative "temporaries"
 
@@ -138,13 +139,12 @@ module Relspec
         built = builds.to_h { |decision| [decision.package, decision] }
         entries = builds.map do |decision|
           needs = @catalog.package(decision.package).build_dependencies.filter_map { |dep| built[dep]&.deb_name }
-          { "package" => decision.package, "source" => decision.deb_name, "version" => decision.version.to_s,
-            "dsc" => "#{decision.deb_name}/#{Debian::Naming.dsc(decision.deb_name, decision.version)}",
-            "build_depends" => needs }
+          Builder::BuildPlan::Entry.new(package: decision.package, source: decision.deb_name,
+                                        version: decision.version.to_s, build_depends: needs,
+                                        dsc: "#{decision.deb_name}/#{Debian::Naming.dsc(decision.deb_name, decision.version)}")
         end
         FileUtils.mkdir_p(@tree.target_dir(target))
-        AtomicFile.update(@tree.plan_file(target),
-                          Yaml::Writer.dump("release" => plan.release, "target" => target.to_s, "builds" => entries))
+        Builder::BuildPlan.write(@tree.target_dir(target), release: plan.release, target: target, entries: entries)
       end
     end
 

@@ -8,6 +8,7 @@ require_relative "diagnostic"
 require_relative "osdeps/files"
 require_relative "output_tree"
 require_relative "builder/build_results"
+require_relative "builder/target_lock"
 require_relative "publish/repository_config"
 require_relative "publish/repository_lock"
 require_relative "publish/upload"
@@ -37,7 +38,28 @@ module Relspec
       tree = OutputTree.new(out, effective.release)
       all = Target.all(effective)
       selected = Target.select(target, all, effective.release)
-      results = selected.to_h { |one| [one, read_results(tree, one, explicit: !target.nil?)] }
+      # No build of these targets runs while their results are read and included.
+      holding(built_folders(tree, selected)) do
+        include_and_render(path, tree, effective, repository, all, selected, timeout: timeout, waiting: waiting,
+                                                                             explicit: !target.nil?)
+      end
+    end
+
+    # The folders of +targets+ that a build wrote into.
+    def self.built_folders(tree, targets)
+      targets.map { |one| tree.target_dir(one) }.select { |dir| File.directory?(dir) }
+    end
+
+    # Holds the target lock of each of +folders+, then yields.
+    def self.holding(folders, &block)
+      return yield if folders.empty?
+
+      Builder::TargetLock.hold(folders.first, "publish") { holding(folders.drop(1), &block) }
+    end
+
+    # +explicit+: the user named the target (unbuilt is then an error).
+    def self.include_and_render(path, tree, effective, repository, all, selected, timeout:, waiting:, explicit:)
+      results = selected.to_h { |one| [one, read_results(tree, one, explicit: explicit)] }
       if results.values.none?
         raise PublishError, "nothing to publish: no target of #{effective.release} has a build-results.yml under " \
                             "#{tree.release_dir} (run relspec build first)"

@@ -1,7 +1,7 @@
 # frozen_string_literal: true
 
 require "spec_helper"
-require "webrick"
+require_relative "../support/fixed_answer_server"
 
 # `relspec check --source launchpad` against a server on 127.0.0.1 that
 # answers 200 with JSON of the wrong shape (issue 24, item 2): one error
@@ -14,18 +14,11 @@ RSpec.describe "relspec check against a Launchpad answering nonsense" do
     @dir = Dir.mktmpdir("relspec-hostile-check")
     fixture = ReleaseFixture.new(@dir)
     fixture.spec("lp", "targets: { focal: [amd64] }\nmaintainer: Demo <demo@example.org>\nselect: [base/types]\n")
-    @body = +""
-    @server = WEBrick::HTTPServer.new(BindAddress: "127.0.0.1", Port: 0, Logger: WEBrick::Log.new(File::NULL), AccessLog: [])
-    @server.mount_proc("/") do |_request, response|
-      response["Content-Type"] = "application/json"
-      response.body = @body
-    end
-    @thread = Thread.new { @server.start }
+    @server = FixedAnswerServer.new
   end
 
   after(:all) do
-    @server.shutdown
-    @thread.join(5)
+    @server.stop
     FileUtils.rm_rf(@dir)
   end
 
@@ -35,8 +28,8 @@ RSpec.describe "relspec check against a Launchpad answering nonsense" do
     "a truncated answer" => ['{"entries": [{"binary_package_name": "cm', "the answer is not JSON"]
   }.each do |what, (body, message)|
     it "says which field is wrong with #{what}" do
-      @body.replace(body)
-      base = "http://127.0.0.1:#{@server.config[:Port]}/1.0"
+      @server.body = body
+      base = "#{@server.url}/1.0"
       run = relspec("check", "specs/lp.yml", "--source", "launchpad", "--launchpad-url", base, "--timeout", "2", chdir: @dir)
       expect(run.exit_code).to eq(1), run.stderr
       expect(run.stdout + run.stderr).to include("Launchpad: #{base}/ubuntu/+archive/primary?", ": #{message}")

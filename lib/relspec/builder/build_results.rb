@@ -3,7 +3,9 @@
 require "yaml"
 require "digest"
 require_relative "../atomic_file"
+require_relative "../display_path"
 require_relative "../yaml/located_document"
+require_relative "../yaml/field_reader"
 require_relative "../apt/version"
 require_relative "../diagnostic"
 require_relative "../error"
@@ -68,7 +70,7 @@ module Relspec
         path = File.join(dir, FILE_NAME)
         return new(path, release, target) unless File.exist?(path)
 
-        read(path, release: release, target: target)
+        read(DisplayPath.of(path), release: release, target: target)
       end
 
       # The results at +path+, for +release+ and +target+ (a Target).
@@ -136,53 +138,47 @@ module Relspec
         attr_reader :records, :backend
 
         def initialize(document, release, target)
+          @fields = Yaml::FieldReader.new(document, rule: "build-results", what: "the build results", hint: HINT)
           @document = document
-          @release = release
-          @target = target
-          read
+          read(release, target)
         end
 
         private
 
-        def read
-          unless @document.ok?
-            raise InvalidInput, @document.diagnostics.select(&:error?).map { |d| diagnostic(d.message, d.location) }
-          end
-
-          data = @document.data
-          fail_at([], "the file is empty or not a mapping") unless data.is_a?(Hash)
+        def read(release, target)
+          data = @fields.root
           fail_at([FORMAT_KEY], "unknown format #{data[FORMAT_KEY].inspect} (this relspec reads #{FORMAT_VERSION})") \
             unless data[FORMAT_KEY] == FORMAT_VERSION
-          known_keys(data, [], ROOT_KEYS)
-          expect(data, ["release"], @release)
-          expect(data, ["target"], @target)
-          @backend = text(data, ["backend"])
-          @records = mapping(data, ["packages"]).map { |source, record| record(source, record) }.freeze
+          @fields.known_keys(data, [], ROOT_KEYS)
+          @fields.expect(data, ["release"], release)
+          @fields.expect(data, ["target"], target)
+          @backend = @fields.text(data, ["backend"])
+          @records = @fields.mapping(data, ["packages"]).map { |source, record| record(source, record) }.freeze
         end
 
         def record(source, fields)
           path = ["packages", source]
           fail_at(path, "#{source.inspect} is not a Debian source package name") unless source.to_s.match?(SOURCE_NAME)
           fail_at(path, "packages.#{source} must be a mapping") unless fields.is_a?(Hash)
-          known_keys(fields, path, PACKAGE_KEYS)
-          status = text(fields, path + ["status"])
+          @fields.known_keys(fields, path, PACKAGE_KEYS)
+          status = @fields.text(fields, path + ["status"])
           fail_at(path + ["status"], "status #{status.inspect} is not one of #{STATUSES.join(', ')}") unless STATUSES.include?(status)
-          files = fields["files"].nil? ? [] : files(fields["files"], path + ["files"])
+          files = files(fields, path + ["files"])
           fail_at(path + ["files"], "a built package lists the files it produced") if status == "built" && files.empty?
-          Record.new(source: source, package: text(fields, path + ["package"]), version: version(fields, path + ["version"]),
-                     status: status, duration: duration(fields, path + ["duration"]),
-                     log: optional_path(fields, path + ["log"]), reason: optional_text(fields, path + ["reason"]),
-                     files: files.freeze).freeze
+          Record.new(source: source, package: @fields.text(fields, path + ["package"]),
+                     version: version(fields, path + ["version"]), status: status,
+                     duration: duration(fields, path + ["duration"]),
+                     log: fields["log"].nil? ? nil : @fields.plain_path(fields, path + ["log"]),
+                     reason: @fields.optional_text(fields, path + ["reason"]), files: files.freeze).freeze
         end
 
-        def files(list, path)
-          fail_at(path, "#{describe(path)} must be a list of files") unless list.is_a?(Array)
-          list.each_with_index.map do |file, index|
+        def files(fields, path)
+          @fields.list(fields, path, of: "files").each_with_index.map do |file, index|
             at = path + [index]
-            fail_at(at, "#{describe(at)} must be a mapping of name, sha256 and size") unless file.is_a?(Hash)
-            known_keys(file, at, FILE_KEYS)
-            name = plain_path(file, at + ["name"])
-            sha256 = text(file, at + ["sha256"])
+            fail_at(at, "#{@fields.describe(at)} must be a mapping of name, sha256 and size") unless file.is_a?(Hash)
+            @fields.known_keys(file, at, FILE_KEYS)
+            name = @fields.plain_path(file, at + ["name"])
+            sha256 = @fields.text(file, at + ["sha256"])
             fail_at(at + ["sha256"], "sha256 must be 64 lowercase hex digits") unless sha256.match?(SHA256)
             size = file["size"]
             fail_at(at + ["size"], "size must be a number of bytes") unless size.is_a?(Integer) && size >= 0
@@ -190,75 +186,24 @@ module Relspec
           end
         end
 
-        # Names from a file become paths: no absolute path, no "..", no empty part.
-        def plain_path(hash, path)
-          name = text(hash, path)
-          inside = !name.start_with?("/") && name.split("/").none? { |part| part.empty? || part == "." || part == ".." }
-          fail_at(path, "file #{name.inspect} is not a plain path inside the target folder") unless inside
-          name
-        end
-
-        def optional_path(hash, path)
-          hash[path.last].nil? ? nil : plain_path(hash, path)
-        end
-
-        def optional_text(hash, path)
-          hash[path.last].nil? ? nil : text(hash, path)
-        end
-
         def duration(hash, path)
           value = hash[path.last]
           return nil if value.nil?
-          fail_at(path, "#{describe(path)} must be a number of seconds") unless value.is_a?(Numeric) && value >= 0
+          fail_at(path, "#{@fields.describe(path)} must be a number of seconds") unless value.is_a?(Numeric) && value >= 0
 
           value
         end
 
         def version(hash, path)
-          value = @document.raw(path) || text(hash, path)
-          fail_at(path, "#{describe(path)} must be text") unless value.is_a?(String)
-          Apt::Version.parse(value)
-          value
-        rescue ArgumentError
-          fail_at(path, "invalid Debian version #{value.inspect}")
-        end
-
-        def expect(hash, path, wanted)
-          value = text(hash, path)
-          fail_at(path, "#{describe(path)} is #{value.inspect}, expected #{wanted.inspect}") unless value == wanted
-        end
-
-        def mapping(hash, path)
-          value = hash[path.last]
-          return {} if value.nil?
-          fail_at(path, "#{describe(path)} must be a mapping") unless value.is_a?(Hash)
+          value = @document.raw(path) || @fields.text(hash, path)
+          fail_at(path, "#{@fields.describe(path)} must be text") unless value.is_a?(String)
+          fail_at(path, "invalid Debian version #{value.inspect}") unless Apt::Version.valid?(value)
 
           value
-        end
-
-        def text(hash, path)
-          value = hash[path.last]
-          fail_at(path, "#{describe(path)} is missing") if value.nil?
-          fail_at(path, "#{describe(path)} must be text") unless value.is_a?(String) || value.is_a?(Numeric)
-
-          value.to_s
-        end
-
-        def known_keys(hash, path, keys)
-          unknown = hash.keys - keys
-          fail_at(path + [unknown.first], "unknown key #{unknown.first.inspect} in #{describe(path)}") unless unknown.empty?
-        end
-
-        def describe(path)
-          path.empty? ? "the file" : path.join(".")
         end
 
         def fail_at(path, message)
-          raise InvalidInput, [diagnostic(message, @document.location(path))]
-        end
-
-        def diagnostic(message, location)
-          Diagnostic.error("build-results", "cannot read the build results: #{message}", location: location, hint: HINT)
+          @fields.fail_at(path, message)
         end
       end
     end
