@@ -31,6 +31,7 @@ module UnitLayer
   # Kernel's methods are private in objects: so are the guards there.
   module PrivateNoChildren
     include NoChildren
+
     private(*NoChildren::NAMES)
   end
 
@@ -55,3 +56,20 @@ RSpec.configure do |config|
     Thread.current[:relspec_unit] = nil
   end
 end
+
+# Release-spec files from text, as SpecFile reads them from disk.
+require "relspec/release_spec/spec_file"
+
+module SpecFiles
+  def spec_file(text, name: "child")
+    path = "specs/#{name}.yml"
+    Relspec::ReleaseSpec::SpecFile.new(path, Relspec::Yaml::LocatedDocument.parse(text, file: path))
+  end
+
+  # "rule@line: message" of each diagnostic, in reading order.
+  def findings(diagnostics)
+    diagnostics.sort_by(&:sort_key).map { |d| "#{d.severity} #{d.rule}@#{d.location&.line}: #{d.message}" }
+  end
+end
+
+RSpec.configure { |config| config.include SpecFiles, file_path: %r{spec/unit/release_spec/} }

@@ -13,7 +13,7 @@ RSpec.describe Relspec::Http::Retry do
 
   it "returns the block's value, on the first attempt when it succeeds" do
     seen = []
-    expect(retry_loop.run { |attempt| seen << attempt && "body" }).to eq("body")
+    expect(retry_loop.run { |attempt| (seen << attempt) && "body" }).to eq("body")
     expect(seen).to eq([1])
     expect(pauses).to eq([])
   end
