@@ -32,7 +32,7 @@ RSpec.describe Relspec::Http::Client do
 
   it "sends the headers, yields the answer and returns the block's value" do
     serve("HTTP/1.1 200 OK\r\nContent-Length: 5\r\n\r\nhello") do |uri, heads|
-      body = described_class.new(timeout: 5).get(uri, "Accept" => "application/json") { |response| response.read_body }
+      body = described_class.new(timeout: 5).get(uri, "Accept" => "application/json", &:read_body)
       expect(body).to eq("hello")
       head = heads.pop
       expect(head).to start_with("GET /dists/x/Release HTTP/1.1\r\n")
