@@ -67,7 +67,7 @@ module Relspec
       def run
         queue = []
         @blacklist.each do |entry|
-          matches = @mapping.keys.grep(entry.pattern)
+          matches = @mapping.keys.select { |package| entry.pattern.match?(package) }
           @unmatched << entry if matches.empty?
           matches.sort.each do |package|
             deb = @mapping[package]

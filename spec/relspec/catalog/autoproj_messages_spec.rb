@@ -2,7 +2,7 @@
 
 require "spec_helper"
 require "relspec/catalog/autoproj_loader"
-require_relative "../../support/rock_workspace"
+require_relative "../../support/rock_workspace_context"
 
 # relspec loads a workspace once per target distribution; what autoproj says
 # while loading (here: the Rock package set overrides autoproj's own cmake
@@ -16,23 +16,16 @@ RSpec.describe Relspec::Catalog::AutoprojMessages do
        "  WARN: osdeps definition for cmake overridden:", "  WARN:   resp. apt-dpkg: cmake3"].each { |line| messages.add(line) }
     end
     expect(messages.to_s).to eq(<<~TEXT)
-      WARN: osdeps definition for cmake overridden:
-      WARN:   resp. apt-dpkg: cmake
-      WARN: other
-      WARN: osdeps definition for cmake overridden:
-      WARN:   resp. apt-dpkg: cmake3
+      \  WARN: osdeps definition for cmake overridden:
+      \  WARN:   resp. apt-dpkg: cmake
+      \  WARN: other
+      \  WARN: osdeps definition for cmake overridden:
+      \  WARN:   resp. apt-dpkg: cmake3
     TEXT
   end
 
   context "through the CLI, on a workspace of real Rock package sets" do
-    before(:all) do
-      need_fixture(RockWorkspace.available?, RockWorkspace.skip_reason)
-      @dir = Dir.mktmpdir("relspec-autoproj-messages")
-      @workspace = RockWorkspace.new(File.join(@dir, "ws"))
-      @workspace.create
-    end
-
-    after(:all) { FileUtils.rm_rf(@dir) if @dir }
+    include_context "a real Rock workspace"
 
     it "says autoproj's warnings once for all targets, on stderr, without terminal styles" do
       FileUtils.mkdir_p(File.join(@dir, "specs"))

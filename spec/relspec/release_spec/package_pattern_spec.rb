@@ -8,7 +8,7 @@ RSpec.describe Relspec::ReleaseSpec::PackagePattern do
   def matches(source, names)
     pattern = described_class.parse(source)
     expect(pattern).to be_a(described_class), pattern.inspect
-    names.grep(pattern)
+    names.select { |name| pattern.match?(name) }
   end
 
   it "matches an exact name only" do
