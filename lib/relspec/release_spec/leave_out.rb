@@ -17,8 +17,6 @@ module Relspec
         end
       end
 
-      NONE_ENTRIES = [].freeze
-
       attr_reader :entries
 
       # Entries whose match cannot be parsed are the file rules' errors; they

@@ -78,6 +78,20 @@ RSpec.describe "leave_out on the real Rock layout" do
     expect(run.stdout).to match(%r{\Abookworm/amd64: \d+ relations checked})
   end
 
+  it "shows in `relspec diff` what a new entry leaves out and why" do
+    changed = File.join(@dir, "changed", "specs")
+    FileUtils.mkdir_p(changed)
+    spec = File.read(File.join(@dir, "specs", "rock.yml")).sub("gem_source: ../gems", "gem_source: #{@dir}/gems")
+    File.write(File.join(changed, "rock.yml"), "#{spec}  - match: tools/orocos.rb\n    reason: its CORBA transport is not built yet\n")
+    run = relspec("diff", "specs/rock.yml", "changed/specs/rock.yml", chdir: @dir)
+    expect(run.exit_code).to eq(0), run.stderr
+    expect(run.stdout).to include("spec: leave_out entry tools/orocos.rb added (its CORBA transport is not built yet) " \
+                                  "→ 1 decision (bookworm/amd64)")
+    change = run.stdout[/^ +decision changed +tools\/orocos\.rb: .*\n.*\n/]
+    expect(change).to match(/build rock-rock-ruby-tools-orocos\.rb \S+ → unavailable\n/)
+    expect(change.lines.last.strip).to eq('left out by "tools/orocos.rb" (its CORBA transport is not built yet)')
+  end
+
   it "refuses an entry that matches no package of the workspace" do
     spec = File.read(File.join(@dir, "specs", "rock.yml")).sub("match: drivers/**", "match: driver/**")
     File.write(File.join(@dir, "specs", "typo.yml"), spec.sub("release: rock", "release: typo"))
