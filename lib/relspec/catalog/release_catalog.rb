@@ -8,6 +8,9 @@ require_relative "metapackages"
 require_relative "release_gems"
 require_relative "gem_resolution"
 require_relative "../display_path"
+require_relative "../release_spec/package_pattern"
+require_relative "../release_spec/leave_out"
+require_relative "../suggestion"
 
 module Relspec
   class Catalog
@@ -83,8 +86,11 @@ module Relspec
           index ? spec_file.location(["select", index]) : nil
         end
         problems = []
+        leave_out = ReleaseSpec::LeaveOut.of(effective)
+        problems.concat(unmatched_leave_out(catalog, leave_out, effective))
         selections = effective.targets.keys.sort.to_h do |codename|
-          [codename, Selection.resolve(catalog, select, codename: codename, workspace: workspace, locate: locate)]
+          [codename, Selection.resolve(catalog, select, codename: codename, workspace: workspace, locate: locate,
+                                                        leave_out: ->(name) { leave_out.match(name, codename) })]
         rescue InvalidInput => e
           problems.concat(e.diagnostics)
           [codename, nil]
@@ -92,6 +98,17 @@ module Relspec
         raise InvalidInput, problems.uniq(&:to_s) unless problems.empty?
 
         selections
+      end
+
+      # A `leave_out` entry that matches no package of the workspace is a
+      # typo or a stale entry, as an unmatched blacklist entry is.
+      def self.unmatched_leave_out(catalog, leave_out, effective)
+        origin = effective.origin("leave_out")
+        leave_out.entries.reject { |entry| catalog.names.any? { |name| entry.pattern.match?(name) } }.map do |entry|
+          Diagnostic.error("unmatched-leave-out", "leave_out entry #{entry.pattern.source.inspect} matches no package of the workspace",
+                           location: origin&.file&.location(origin.path + [entry.index, "match"]),
+                           hint: Suggestion.hint(entry.pattern.source, catalog.names) || "remove the entry, or fix the match")
+        end
       end
 
       def self.resolve_gems(catalog, names, resolution, fetch, archives, locked, timeout)

@@ -62,7 +62,11 @@ module Relspec
             puts format("  %-32s %-9s %-10s %s", package.name, package.build_type, commit, package.commit_time)
           end
           selection.unavailable.each do |name, reason|
-            why = reason.dependency ? "requires #{reason.dependency}" : "osdeps #{reason.osdeps.join(', ')} nonexistent"
+            why =
+              if reason.dependency then "requires #{reason.dependency}"
+              elsif reason.left_out then "left out by #{reason.left_out.pattern.source} (#{reason.left_out.reason})"
+              else "osdeps #{reason.osdeps.join(', ')} nonexistent"
+              end
             puts format("  %-32s unavailable on #{codename}: %s", name, why)
           end
         end

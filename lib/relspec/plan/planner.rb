@@ -110,6 +110,8 @@ module Relspec
             reason = reasons.fetch(name)
             if reason.dependency
               Cause.unavailable_dependency(reason.dependency, cause_of.call(reason.dependency))
+            elsif reason.left_out
+              Cause.left_out(reason.left_out.pattern.source, reason.left_out.reason)
             else
               Cause.nonexistent_osdeps(reason.osdeps, target.codename)
             end

@@ -14,7 +14,7 @@ module Relspec
     class EffectiveSpec
       # Key order of `relspec show`: identity, lineage, content, packaging.
       KEYS = %w[
-        release description parent ancestors workspace select blacklist pins gems gem_source targets
+        release description parent ancestors workspace select blacklist leave_out pins gems gem_source targets
         repository install_prefix separate_prefixes package_prefix maintainer external distributions
       ].freeze
 

@@ -85,4 +85,25 @@ RSpec.describe "the real Rock package sets" do
       expect(run.stdout).not_to include("lacks")
     end
   end
+
+  it "reports every gem missing from an offline gem_source in one run, with how to fetch it" do
+    with_specs("rock" => <<~YAML) do |dir, root|
+      release: rock
+      workspace: #{@workspace.root}
+      select: [typelib, tools/orocos.rb]
+      leave_out: [{ match: tools/pocolog, reason: not among the repositories of ../shared }]
+      targets: { bookworm: [amd64] }
+      distributions: { bookworm: { archive: { host: true } } }
+      gem_source: ../gems
+    YAML
+      FileUtils.mkdir_p(File.join(root, "gems"))
+      run = relspec("plan", File.join(dir, "rock.yml"))
+      expect(run.exit_code).to eq(1)
+      # bookworm lacks facets and rice, and has rake-compiler only at 1.2.1 (Rock asks for <0.9.0)
+      expect(run.stderr.scan(/error\[gem-unresolvable\]: no version of gem (\S+)/).flatten).to eq(%w[facets rake-compiler rice])
+      expect(run.stderr).to include("hint: fetch it into ../gems: `gem fetch rake-compiler -v '< 0.9.0'`; with the gems " \
+                                    "it needs: `gem install --install-dir <dir> --no-document rake-compiler -v '< 0.9.0'`")
+      expect(run.stderr).not_to match(/\.rb:\d+:in /)
+    end
+  end
 end
