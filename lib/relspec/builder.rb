@@ -133,7 +133,8 @@ module Relspec
                      Slurm::Engine.new(cluster: Slurm::Cluster.new, settings: @slurm_settings, backend: backend,
                                        notices: @notices)
                                   .run(plan: plan, target: target, repositories: repositories, done: done,
-                                       done_debs: debs, keep_going: @keep_going, on_start: on_start, on_done: on_done)
+                                       done_debs: debs, keep_going: @keep_going, rebuild: @rebuild,
+                                       on_start: on_start, on_done: on_done)
                    else
                      Scheduler.new(plan.entries, jobs: @jobs, keep_going: @keep_going, done: done)
                               .run(on_start: on_start, on_done: on_done) do |entry|

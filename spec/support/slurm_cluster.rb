@@ -84,9 +84,26 @@ class SlurmCluster
     [env.merge("XDG_CACHE_HOME" => CliRunner::CACHE), *prefix, RbConfig.ruby, CliRunner::EXE, *args]
   end
 
-  def relspec(*args, chdir:)
-    stdout, stderr, status = Open3.capture3(*relspec_command(*args), chdir: chdir, stdin_data: "")
+  # +env+: more environment (the jobs inherit it: sbatch exports it).
+  def relspec(*args, chdir:, env: {})
+    command = relspec_command(*args)
+    stdout, stderr, status = Open3.capture3(command.first.merge(env), *command.drop(1), chdir: chdir, stdin_data: "")
     CliRunner::Run.new(stdout: stdout, stderr: stderr, status: status, max_rss_kib: 0)
+  end
+
+  # A folder of commands that run +tools+ in this machine's own network
+  # namespace, for PATH: the cluster's namespace has only loopback, while a
+  # real node reaches its Debian mirror (sbuild's and mmdebstrap's apt need
+  # it). The tools themselves are the real ones.
+  def with_network(tools)
+    bin = File.join(@dir, "network-bin")
+    FileUtils.mkdir_p(bin)
+    tools.each do |tool|
+      real = File.join("/usr/bin", tool)
+      File.write(File.join(bin, tool), "#!/bin/sh\nexec nsenter --net=/proc/#{Process.pid}/ns/net -- #{real} \"$@\"\n")
+      File.chmod(0o755, File.join(bin, tool))
+    end
+    { "PATH" => "#{bin}:#{ENV.fetch('PATH')}" }
   end
 
   # squeue's jobs (also the finished ones it still shows).

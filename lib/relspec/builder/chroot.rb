@@ -2,11 +2,11 @@
 
 require "fileutils"
 require "open3"
-require "shellwords"
 require_relative "../error"
 require_relative "../cache_dir"
 require_relative "../temporaries"
 require_relative "emulation"
+require_relative "shell_line"
 
 module Relspec
   module Builder
@@ -76,9 +76,9 @@ module Relspec
       def job_steps
         # mmdebstrap picks the format by the name's ending
         partial = File.join(File.dirname(@path), ".#{File.basename(@path, '.tar.zst')}.partial.tar.zst")
-        ["if [ ! -f #{Shellwords.escape(@path)} ]; then mkdir -p #{Shellwords.escape(File.dirname(@path))} && " \
-         "#{Shellwords.join(command(partial, mirrors_or_raise))} && mv #{Shellwords.escape(partial)} " \
-         "#{Shellwords.escape(@path)}; fi"]
+        ["if [ ! -f #{ShellLine.quote(@path)} ]; then mkdir -p #{ShellLine.quote(File.dirname(@path))} && " \
+         "#{ShellLine.join(command(partial, mirrors_or_raise))} && mv #{ShellLine.quote(partial)} " \
+         "#{ShellLine.quote(@path)}; fi"]
       end
 
       private

@@ -2,10 +2,10 @@
 
 require "fileutils"
 require "open3"
-require "shellwords"
 require "tmpdir"
 require_relative "../error"
 require_relative "produced_files"
+require_relative "shell_line"
 
 module Relspec
   module Builder
@@ -61,17 +61,17 @@ module Relspec
       def job_steps(request, work)
         debs = request.repositories.flat_map { |repository| repository.pool_debs(request.target) } + request.local_debs
         build = ["dpkg-buildpackage", "-us", "-uc", "-b", "-d"]
-        steps = [Shellwords.join(["dpkg-source", "-x", request.dsc, File.join(work, "source")])]
+        steps = [ShellLine.join(["dpkg-source", "-x", request.dsc, File.join(work, "source")])]
         unless debs.empty?
           root = File.join(work, "local-root")
-          steps << Shellwords.join(["mkdir", "-p", File.join(root, "opt")])
+          steps << ShellLine.join(["mkdir", "-p", File.join(root, "opt")])
           # a folder (the results of a package built earlier in the run) gives all its .debs
-          patterns = debs.map { |deb| deb.end_with?(".deb") ? Shellwords.escape(deb) : "#{Shellwords.escape(deb)}/*.deb" }
+          patterns = debs.map { |deb| deb.end_with?(".deb") ? ShellLine.quote(deb) : "#{ShellLine.quote(deb)}/*.deb" }
           steps << "for deb in #{patterns.join(' ')}; do [ ! -f \"$deb\" ] || dpkg-deb -x \"$deb\" " \
-                   "#{Shellwords.escape(root)}; done"
+                   "#{ShellLine.quote(root)}; done"
           build = overlay_prefix(root) + build
         end
-        steps << "cd source && #{Shellwords.join(build)}"
+        steps << "cd source && #{ShellLine.join(build)}"
       end
 
       # Nothing to prepare on a node either.

@@ -1,11 +1,11 @@
 # frozen_string_literal: true
 
 require "fileutils"
-require "shellwords"
 require "tmpdir"
 require_relative "chroot"
 require_relative "../error"
 require_relative "produced_files"
+require_relative "shell_line"
 
 module Relspec
   module Builder
@@ -65,7 +65,7 @@ module Relspec
       # The shell lines of a Slurm job that builds +request+ in +work+
       # (Slurm::JobScript runs them in that folder).
       def job_steps(request, work)
-        [Shellwords.join(command(request, work))]
+        [ShellLine.join(command(request, work))]
       end
 
       # The shell lines of the job that makes the target's chroot tarball

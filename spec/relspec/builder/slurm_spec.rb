@@ -185,7 +185,8 @@ RSpec.describe "relspec build --engine slurm", order: :defined do
     # the chroot tarballs of the test run (made by the first sbuild test, or here by the chroot job)
     shared = File.join(CliRunner::CACHE, "relspec")
     run = @cluster.relspec("build", "specs/sls.yml", "--out", "out", "--backend", "sbuild", "--engine", "slurm",
-                           "--slurm", "poll_interval=0.5", "--slurm", "shared_folder=#{shared}", chdir: release.dir)
+                           "--slurm", "poll_interval=0.5", "--slurm", "shared_folder=#{shared}", chdir: release.dir,
+                           env: @cluster.with_network(%w[sbuild mmdebstrap]))
     expect(run.exit_code).to eq(0), run.stdout + run.stderr
     packages = results(release).fetch("packages")
     expect(results(release).fetch("backend")).to eq("sbuild")
@@ -198,5 +199,6 @@ RSpec.describe "relspec build --engine slurm", order: :defined do
     two = File.read(File.join(release.target_dir, "logs", "#{release.source('base/two')}.log"))
     # sbuild installed the build-dependency the job before built.
     expect(two).to match(/Unpacking #{Regexp.escape(release.source('base/one'))} /)
+    expect(File.read(File.join(release.target_dir, "logs", "prepare.log"))).to include("$ if [ ! -f ")
   end
 end

@@ -43,8 +43,11 @@ module Relspec
         end
 
         # +plan+: BuildPlan; +done+: sources built before (not run again);
-        # +done_debs+: their .debs; +repositories+: as for the local builds.
-        def run(plan:, target:, repositories:, done:, done_debs:, keep_going:, on_start: nil, on_done: nil)
+        # +done_debs+: their .debs; +repositories+: as for the local builds;
+        # +rebuild+: the result files of an earlier relspec of this run are
+        # not taken either.
+        def run(plan:, target:, repositories:, done:, done_debs:, keep_going:, rebuild: false, on_start: nil,
+                on_done: nil)
           @plan = plan
           @target = target
           @dir = plan.dir
@@ -60,7 +63,7 @@ module Relspec
           pending = plan.entries.reject { |entry| done.include?(entry.source) }
           @tracked = {} # job id => entry
           live = live_jobs
-          pending = settle_finished(pending, live)
+          pending = settle_finished(pending, live) unless rebuild
           return @outcomes if pending.empty?
 
           submit_all(pending, live, repositories, done_debs)
@@ -203,7 +206,7 @@ module Relspec
           job = queue[@prepare_id]
           return if @failed["chroot"] || job.nil? || job.live? || job.state == COMPLETED
 
-          @failed["chroot"] = "the #{@target} chroot job (#{job.state}, see #{File.join(@dir, 'logs', 'prepare.log')})"
+          @failed["chroot"] = "the #{@target} chroot job failed (#{job.state}, see #{File.join(@dir, 'logs', 'prepare.log')})"
         end
 
         def settle(id, entry, job)
@@ -218,7 +221,7 @@ module Relspec
                                "differ; is #{@dir} on a filesystem every node shares?)", result&.duration)
           end
           root = failed_root(entry)
-          return skip(entry, "build-dependency #{root} failed") if root
+          return skip(entry, skip_reason(root)) if root
           return skip(entry, not_started) if state == CANCELLED && @stopped
 
           fail(entry, failure_reason(id, entry, job, result), result&.duration)
@@ -265,7 +268,7 @@ module Relspec
             @tracked.delete(id)
             cancel([id])
             @failed[entry.source] = root
-            report(Scheduler::Outcome.new(entry: entry, status: :skipped, reason: "build-dependency #{root} failed"))
+            report(Scheduler::Outcome.new(entry: entry, status: :skipped, reason: skip_reason(root)))
           end
         end
 
@@ -277,6 +280,10 @@ module Relspec
           waiting = @tracked.keys.select { |id| queue[id]&.state == "PENDING" }
           cancel(waiting)
           waiting.each { |id| skip(@tracked.delete(id), not_started) }
+        end
+
+        def skip_reason(root)
+          root == @failed["chroot"] ? root : "build-dependency #{root} failed"
         end
 
         def not_started

@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
-require "shellwords"
+
+require_relative "../shell_line"
 
 module Relspec
   module Builder
@@ -23,9 +24,9 @@ module Relspec
             #!/bin/sh
             # #{title}
             # Written by `relspec build --engine slurm`; the result file is written last.
-            work=#{Shellwords.escape(work)}
-            result=#{Shellwords.escape(result)}
-            out=#{Shellwords.escape(output_dir.to_s)}
+            work=#{ShellLine.quote(work)}
+            result=#{ShellLine.quote(result)}
+            out=#{ShellLine.quote(output_dir.to_s)}
             started=$(date +%s.%N)
             rm -rf "$work" "$result"
             mkdir -p "$work"
@@ -36,7 +37,7 @@ module Relspec
             steps() {
               set -e
               cd "$work"
-            #{steps.map { |step| "  echo #{Shellwords.escape("$ #{step}")}\n  #{step}" }.join("\n")}
+            #{steps.map { |step| "  echo #{ShellLine.quote("$ #{step}")}\n  #{step}" }.join("\n")}
             }
             ( steps ) 2>&1
             status=$?
