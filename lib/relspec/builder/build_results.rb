@@ -65,10 +65,6 @@ module Relspec
 
       attr_reader :path, :release, :target, :backend
 
-      def self.path(out, release, target)
-        File.join(out, release, "#{target.codename}-#{target.arch}", FILE_NAME)
-      end
-
       # The results in target folder +dir+, empty when there are none yet.
       def self.load(dir, release:, target:)
         path = File.join(dir, FILE_NAME)
@@ -77,7 +73,7 @@ module Relspec
         read(DisplayPath.of(path), release: release, target: target)
       end
 
-      # The results at +path+, for +release+ and +target+ (a Plan::Target).
+      # The results at +path+, for +release+ and +target+ (a Target).
       def self.read(path, release:, target:)
         from(Yaml::LocatedDocument.load(path), release, target)
       end

@@ -38,6 +38,10 @@ module Relspec
         @fetcher.remote? ? "#{@source}/info/<name>" : @source
       end
 
+      def folder?
+        !@fetcher.remote?
+      end
+
       # Gem::Versions of +name+, highest first; [] when the source has none.
       # Each name is listed once per run.
       def of(name)

@@ -9,7 +9,7 @@ require_relative "osdeps_commands"
 
 module Relspec
   module CLI
-    # The command line (DESIGN §7). Each command is a small class; this file
+    # The command line (README.md lists the commands). Each command is a small class; this file
     # only declares options and hands them over. Command classes are required
     # when their command runs, so that each command loads only what it needs.
     class Main < Thor
@@ -159,13 +159,19 @@ module Relspec
       option :rebuild, type: :boolean, default: false, desc: "Rebuild packages an earlier run built"
       option :prepare, type: :boolean, default: false, desc: "Only make the chroot tarballs (sbuild)"
       option :format, enum: %w[text json], default: "text", desc: "Output format"
+      option :engine, enum: %w[local slurm], default: "local",
+                      desc: "local (--jobs at once here) or slurm (jobs on a Slurm cluster; docs/scale-out.md)"
+      option :slurm, type: :string, repeatable: true,
+                     desc: "A cluster setting KEY=VALUE (partition, account, time_limit, memory, cpus_per_build, " \
+                           "shared_folder, poll_interval, features.ARCH); repeatable"
       def build(path)
         require_relative "build_command"
         require_relative "build_progress"
         finish BuildCommand.new(path: path, out: options[:out], backend: options[:backend], jobs: options[:jobs],
                                 targets: options[:target], keep_going: options[:keep_going],
                                 rebuild: options[:rebuild], prepare: options[:prepare], format: options[:format],
-                                out_io: $stdout, progress_io: options[:quiet] ? nil : $stderr).call
+                                out_io: $stdout, progress_io: options[:quiet] ? nil : $stderr,
+                                engine: options[:engine], slurm: options[:slurm] || [], err_io: $stderr).call
       end
 
       desc "check SPEC", "Check that the OS dependencies of the release exist on every target"
@@ -238,7 +244,7 @@ module Relspec
       desc "catalog SUBCOMMAND", "The package database of a workspace (export, show)"
       subcommand "catalog", CatalogCommands
 
-      desc "osdeps SUBCOMMAND", "osdeps files for autoproj (render SPEC, index, select); `osdeps SPEC` renders"
+      desc "osdeps SUBCOMMAND", "osdeps files for autoproj (render SPEC, index, select, package-set); `osdeps SPEC` renders"
       subcommand "osdeps", OsdepsCommands
 
       # Options of every command that people also write before the command

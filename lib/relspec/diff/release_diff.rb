@@ -36,7 +36,13 @@ module Relspec
           (before.keys | after.keys).sort.filter_map do |codename|
             next if before[codename] == after[codename]
 
-            change = if !before.key?(codename) then "added" elsif !after.key?(codename) then "removed" else "changed" end
+            change = if !before.key?(codename)
+                       "added"
+                     elsif !after.key?(codename)
+                       "removed"
+                     else
+                       "changed"
+                     end
             AncestorChange.new(ancestor: ancestor, codename: codename, change: change,
                                packages: followed(ancestor, codename, targets)).freeze
           end

@@ -61,7 +61,7 @@ module Relspec
 
       def lock
         unless @document.ok?
-          raise LockError, @document.diagnostics.select(&:error?).map { |d| Diagnostic.error("lock", d.message, location: d.location, hint: DISCARD_HINT) }
+          raise(LockError, @document.diagnostics.select(&:error?).map { |d| Diagnostic.error("lock", d.message, location: d.location, hint: DISCARD_HINT) })
         end
 
         data = @document.data
@@ -145,23 +145,23 @@ module Relspec
       # Format 1 kept builds in the decisions (and last_build for packages
       # not built that time).
       def history_of_format1(data)
-        history = History.empty
-        mapping(data["targets"], ["targets"]).each do |target, entries|
-          mapping(entries, ["targets", target]).each do |name, entry|
-            [entry, entry.is_a?(Hash) && entry["last_build"]].each do |build|
+        builds = mapping(data["targets"], ["targets"]).flat_map do |target, entries|
+          mapping(entries, ["targets", target]).flat_map do |name, entry|
+            [entry, entry.is_a?(Hash) && entry["last_build"]].filter_map do |build|
               next unless build.is_a?(Hash) && build["debian_digest"]
 
               version = Debian::PackageVersion.parse(build["version"])
-              history = history.with(target, name, version, build["debian_digest"]) if version
+              version && [target, name, version, build["debian_digest"]]
             end
           end
         end
-        history
+        History.empty.with_all(builds)
       end
 
       # +value+ (at +path+) as a Hash; a missing top-level section is empty.
       def mapping(value, path)
         return {} if value.nil? && path.size == 1
+
         fail_at(path, "#{describe(path)} must be a mapping") unless value.is_a?(Hash)
 
         value
@@ -176,8 +176,7 @@ module Relspec
         value = hash[path.last]
         fail_at(path, "#{describe(path)} must be text") unless value.is_a?(String) || value.is_a?(Integer) || value.is_a?(Float)
 
-        value = @document.raw(path) || value.to_s
-        value
+        @document.raw(path) || value.to_s
       end
 
       def optional_string(hash, path)
@@ -187,6 +186,7 @@ module Relspec
       def strings(hash, path)
         list = hash[path.last]
         return [] if list.nil?
+
         fail_at(path, "#{describe(path)} must be a list of text") unless list.is_a?(Array) && list.all?(String)
 
         list

@@ -217,7 +217,7 @@ module Relspec
           key_path = (path + [key]).freeze
           if first_seen.key?(key)
             @diagnostics << Diagnostic.error("duplicate-key", "duplicate key \"#{key}\"", location: at(key_node),
-                                             hint: "it is already set at line #{first_seen[key]}; keep only one")
+                                                                                          hint: "it is already set at line #{first_seen[key]}; keep only one")
             next
           end
           first_seen[key] = key_node.start_line + 1

@@ -71,7 +71,7 @@ RSpec.describe Relspec::Builder::BuildResults do
     it "refuses #{what} at its line" do
       text = good.sub(from, to)
       expect(text).not_to eq(good)
-      expect(error_of(text)).to match(/\Abuild\/demo-base\/bookworm-amd64\/build-results\.yml:#{line}:\d+: error\[build-results\]: .*#{Regexp.escape(message)}/)
+      expect(error_of(text)).to match(%r{\Abuild/demo-base/bookworm-amd64/build-results\.yml:#{line}:\d+: error\[build-results\]: .*#{Regexp.escape(message)}})
     end
   end
 
@@ -103,7 +103,7 @@ RSpec.describe Relspec::Builder::BuildResults do
   end
 
   it "refuses results of another release and broken YAML" do
-    expect(error_of(good, release: "demo-child")).to include(':2:', 'release is "demo-base", expected "demo-child"')
+    expect(error_of(good, release: "demo-child")).to include(":2:", 'release is "demo-base", expected "demo-child"')
     expect(error_of("packages: [\n")).to include("build-results.yml:")
     expect(error_of("")).to include("the file is empty or not a mapping")
   end
