@@ -4,12 +4,15 @@ require "spec_helper"
 
 # Unknown subcommands and options of every command group (issue 24, item
 # 3): one "relspec: error:" line with a hint, exit 1, and never taken as an
-# argument of another command (`relspec osdeps package-set` once ran
-# `osdeps render package-set`).
+# argument of another command (`relspec osdeps package-set`, before that
+# command existed, ran `osdeps render package-set`).
 RSpec.describe "relspec on a command line it does not know", :tmpdir do
   {
-    %w[osdeps package-set x] => 'relspec osdeps has no command "package-set" (commands: help, index, render, select, tree)',
-    %w[osdeps slect] => 'relspec osdeps has no command "slect" (commands: help, index, render, select, tree); did you mean "select"?',
+    %w[osdeps frobnicate x] => 'relspec osdeps has no command "frobnicate" (commands: help, index, package-set, render, select, tree)',
+    %w[osdeps slect] => 'relspec osdeps has no command "slect" (commands: help, index, package-set, render, select, tree); ' \
+                        'did you mean "select"?',
+    %w[osdeps package-sett x] => 'relspec osdeps has no command "package-sett" (commands: help, index, package-set, render, ' \
+                                 'select, tree); did you mean "package-set"?',
     %w[catalog shwo x] => 'relspec catalog has no command "shwo" (commands: export, help, show, tree); did you mean "show"?',
     %w[publsh x] => 'relspec has no command "publsh" (commands: build, catalog, check, compile, diff, help, osdeps, ' \
                     'plan, publish, show, tree, validate, version, why); did you mean "publish"?',
