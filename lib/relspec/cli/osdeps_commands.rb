@@ -53,6 +53,7 @@ module Relspec
         if options[:repo_url] && !Osdeps::IndexCheck.http?(options[:repo_url])
           raise Error, "--repo-url must be an http(s) URL, not #{options[:repo_url].inspect}"
         end
+
         text = Osdeps::ReleaseIndex.render(indexed_releases(spec_library), repo_url: options[:repo_url],
                                                                            public_key: options[:public_key])
         target = Project.new(File.dirname(options[:specs])).release_index
