@@ -6,6 +6,7 @@ require "openssl"
 require "uri"
 require_relative "../error"
 require_relative "../http/capped_body"
+require_relative "launchpad_page"
 require_relative "../http/client"
 require_relative "../http/retry"
 
@@ -68,8 +69,8 @@ module Relspec
         entries = []
         MAX_PAGES.times do
           page = get_json(url, "#{series}/#{arch}")
-          entries.concat(Array(page["entries"]))
-          url = page["next_collection_link"]
+          entries.concat(page.entries)
+          url = page.next_link
           return entries unless url
         end
         raise Failure, "Launchpad: more than #{MAX_PAGES} pages for #{name} on #{series}/#{arch}"
@@ -125,12 +126,7 @@ module Relspec
       end
 
       def parse(body, url)
-        data = JSON.parse(body)
-        raise Failure, "Launchpad: #{url}: the answer is not a collection" unless data.is_a?(Hash) && data.key?("entries")
-
-        data
-      rescue JSON::ParserError => e
-        raise Failure, "Launchpad: #{url}: the answer is not JSON (#{e.message[0, 80]})"
+        LaunchpadPage.parse(body, url, failure: Failure)
       end
 
       def describe(error)

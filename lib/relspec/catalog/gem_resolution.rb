@@ -9,9 +9,9 @@ require_relative "../error"
 
 module Relspec
   class Catalog
-    # Which gems the release packages without being told (DESIGN: "all
-    # external Ruby gems that are required by a package … automatically
-    # become part of the generated binary release"). A gem osdep of a
+    # Which gems the release packages without being told: every external
+    # Ruby gem a package requires becomes part of the binary release
+    # (docs/compile.md, Gem resolution). A gem osdep of a
     # selected package, and a runtime dependency of a gem the release
     # packages, is:
     #
@@ -194,7 +194,20 @@ module Relspec
                 end
         Diagnostic.error("gem-unresolvable", "no version of gem #{name} in #{@versions.where} fits what is asked: " \
                                              "#{asked}; #{there}",
-                         location: @location, hint: "add a fitting #{name} to gem_source, or pin one with gems:")
+                         location: @location, hint: fetch_hint(name))
+      end
+
+      # Offline, a folder source is filled by hand: say how. Every gem
+      # missing at this depth is its own error of the same run; what they
+      # need in turn is known only from their .gem, hence `gem install`,
+      # which fetches the whole closure at once.
+      def fetch_hint(name)
+        return "add a fitting #{name} to gem_source, or pin one with gems:" unless @versions.folder?
+
+        requirement = @requests[name].map(&:first).reject(&:none?).flat_map(&:as_list).uniq.join(", ")
+        version = requirement.empty? ? "" : " -v '#{requirement}'"
+        "fetch it into #{@versions.where}: `gem fetch #{name}#{version}`; with the gems it needs: " \
+          "`gem install --install-dir <dir> --no-document #{name}#{version}`, then copy <dir>/cache/*.gem there"
       end
 
       def fetch(name, version)

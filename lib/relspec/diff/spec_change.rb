@@ -12,6 +12,7 @@ module Relspec
       def to_s
         what = case key
                when "blacklist" then "blacklist entry #{subject}"
+               when "leave_out" then "leave_out entry #{subject}"
                when "pins" then "pin of #{subject}"
                when "targets" then "target #{subject}"
                else key

@@ -71,6 +71,11 @@ module Relspec
           fail_at([Lock::FORMAT_KEY], "unknown lock format #{format.inspect} (this relspec reads 1 and #{Lock::FORMAT_VERSION})")
         end
         known_keys(data, [], ROOT_KEYS)
+        # LockGenerator writes every section of format 2: one missing means
+        # the file was cut short, and reading it as "no targets" would
+        # show a diff or a plan less than the truth.
+        missing = format == Lock::FORMAT_VERSION ? ROOT_KEYS - data.keys : []
+        fail_at([], "the lock has no #{missing.first}: section (cut short?)") unless missing.empty?
         release = string(data, ["release"])
         fail_at(["release"], "the lock is of release #{release}, not #{@release}") if @release && release != @release
 
@@ -140,18 +145,17 @@ module Relspec
       # Format 1 kept builds in the decisions (and last_build for packages
       # not built that time).
       def history_of_format1(data)
-        history = History.empty
-        mapping(data["targets"], ["targets"]).each do |target, entries|
-          mapping(entries, ["targets", target]).each do |name, entry|
-            [entry, entry.is_a?(Hash) && entry["last_build"]].each do |build|
+        builds = mapping(data["targets"], ["targets"]).flat_map do |target, entries|
+          mapping(entries, ["targets", target]).flat_map do |name, entry|
+            [entry, entry.is_a?(Hash) && entry["last_build"]].filter_map do |build|
               next unless build.is_a?(Hash) && build["debian_digest"]
 
               version = Debian::PackageVersion.parse(build["version"])
-              history = history.with(target, name, version, build["debian_digest"]) if version
+              version && [target, name, version, build["debian_digest"]]
             end
           end
         end
-        history
+        History.empty.with_all(builds)
       end
 
       # +value+ (at +path+) as a Hash; a missing top-level section is empty.

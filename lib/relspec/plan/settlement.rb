@@ -14,7 +14,7 @@ module Relspec
     # dependencies first: a package's debian/ names the versions of its
     # dependencies, so their revisions must be known before its own digest
     # is. This runs during planning, so plan, why, compile, osdeps and the
-    # builder all read the same versions (DESIGN §12).
+    # builder all read the same versions (docs/design.md, One truth for versions).
     class Settlement
       # What compile needs to emit one build: the DebianDir +input+, the
       # +overlay+ and the +digest+ of debian/ the version was settled from.

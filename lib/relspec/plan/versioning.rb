@@ -6,7 +6,7 @@ require_relative "../debian/package_version"
 module Relspec
   module Plan
     # The one place that decides the version of a package built here and
-    # whether the release's repository already holds it (DESIGN §12).
+    # whether the release's repository already holds it (docs/design.md, One truth for versions).
     #
     # The revision starts at 1 for a new upstream version and goes up when
     # debian/ changes for the same upstream version. The history (from the

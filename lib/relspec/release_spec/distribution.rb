@@ -1,5 +1,7 @@
 # frozen_string_literal: true
 
+require_relative "../error"
+
 module Relspec
   module ReleaseSpec
     # A target distribution as autoproj's osdeps name it: a type (ubuntu
@@ -62,6 +64,19 @@ module Relspec
         Distribution.define("bullseye", "debian", %w[11 bullseye default], debhelper_compat: 13, ruby: "2.7"),
         Distribution.define("bookworm", "debian", %w[12 bookworm default], debhelper_compat: 13, ruby: "3.1")
       ].to_h { |d| [d.codename, d] }.freeze
+
+      # The built-ins named in +list+ ("bionic,buster"; nil: all of them); an
+      # unknown name is an InvalidOption.
+      def self.builtin(list)
+        return BUILTIN unless list
+
+        names = list.split(",").map(&:strip)
+        unknown = names - BUILTIN.keys
+        raise InvalidOption, "unknown distribution #{unknown.first.inspect} (known: #{BUILTIN.keys.join(', ')})" \
+          unless unknown.empty?
+
+        BUILTIN.slice(*names)
+      end
 
       # Built-ins overlaid with a spec's own definitions ({codename =>
       # {"type", "labels", "archive"}}); a built-in keeps what an override leaves out.
