@@ -156,7 +156,7 @@ RSpec.describe "relspec build and publish under concurrency and faults", order: 
       failures = [4096, 64 * 1024].map do |free|
         FileUtils.rm_rf(repository)
         File.open(filler, "wb") do |file|
-          file.write("\0" * 65_536) while true # rubocop:disable Lint/LiteralAsCondition
+          loop { file.write("\0" * 65_536) }
         rescue Errno::ENOSPC
           file.truncate([file.size - free, 0].max)
         end

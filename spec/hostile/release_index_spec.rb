@@ -92,7 +92,7 @@ RSpec.describe "relspec osdeps index and package-set on releases the index canno
 
   it "refuses a package set for a release not published for one of its targets" do
     expect(refused("package-set", "a" => "#{TARGETS}repository: { url: https://example.org/r/a, path: ../repo, trusted: true }\n"))
-      .to eq("specs/a.yml:3:1: error[package-set-unpublished]: a is not published for bookworm/amd64 in repo\n" \
-             "  hint: run `relspec publish` for it first\n1 error in 1 file\n")
+      .to eq("specs/a.yml:3:1: error[package-set-unpublished]: a is not published for bookworm/amd64 in repo\n  " \
+             "hint: run `relspec publish` for it first\n1 error in 1 file\n")
   end
 end

@@ -36,7 +36,7 @@ class RealRockWorkspace
     "tools/orogen_metadata" => ["tools-orogen_metadata", "tools/orogen_metadata"],
     "tools/orocos.rb" => ["tools-orocosrb", "tools/orocos.rb"],
     "tools/service_discovery" => ["tools-service_discovery", "tools/service_discovery"],
-    "stdint_typekit" => ["stdint_typekit", "stdint_typekit"]
+    "stdint_typekit" => %w[stdint_typekit stdint_typekit]
   }.freeze
 
   def self.available?

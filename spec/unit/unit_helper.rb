@@ -9,6 +9,7 @@
 $LOAD_PATH.unshift(File.expand_path("../../lib", __dir__))
 require "rspec"
 
+# What keeps the unit layer in memory.
 module UnitLayer
   # Raised when code under a unit test starts a child process.
   class ChildProcess < StandardError; end
@@ -57,9 +58,9 @@ RSpec.configure do |config|
   end
 end
 
-# Release-spec files from text, as SpecFile reads them from disk.
 require "relspec/release_spec/spec_file"
 
+# Release-spec files from text, as SpecFile reads them from disk.
 module SpecFiles
   def spec_file(text, name: "child")
     path = "specs/#{name}.yml"

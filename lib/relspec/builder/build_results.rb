@@ -189,6 +189,7 @@ module Relspec
         def duration(hash, path)
           value = hash[path.last]
           return nil if value.nil?
+
           fail_at(path, "#{@fields.describe(path)} must be a number of seconds") unless value.is_a?(Numeric) && value >= 0
 
           value

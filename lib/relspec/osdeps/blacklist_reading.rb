@@ -72,7 +72,11 @@ module Relspec
         theirs = names.select { |name| package_set_match?(name) }
         return nil if ours == theirs
 
-        ours_kind = relspec ? "a #{relspec.kind == :exact ? 'name' : relspec.kind}" : "nothing it can read"
+        ours_kind = if relspec
+                      "a #{relspec.kind == :exact ? 'name' : relspec.kind}"
+                    else
+                      "nothing it can read"
+                    end
         theirs_kind = package_set.is_a?(Regexp) ? "an unanchored regular expression" : "a name"
         "relspec reads it as #{ours_kind} (#{listing(ours)}), the rock-osdeps package set as #{theirs_kind} " \
           "(#{listing(theirs)}): both are disabled"

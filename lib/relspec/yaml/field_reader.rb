@@ -21,7 +21,7 @@ module Relspec
         @hint = hint
         return if document.ok?
 
-        raise InvalidInput, document.diagnostics.select(&:error?).map { |d| diagnostic(d.message, d.location) }
+        raise(InvalidInput, document.diagnostics.select(&:error?).map { |d| diagnostic(d.message, d.location) })
       end
 
       # The document's root, which must be a mapping.
@@ -46,6 +46,7 @@ module Relspec
       def mapping(hash, path)
         value = hash[path.last]
         return {} if value.nil?
+
         fail_at(path, "#{describe(path)} must be a mapping") unless value.is_a?(Hash)
 
         value
@@ -54,6 +55,7 @@ module Relspec
       def list(hash, path, of:)
         value = hash[path.last]
         return [] if value.nil?
+
         fail_at(path, "#{describe(path)} must be a list of #{of}") unless value.is_a?(Array)
 
         value

@@ -79,7 +79,7 @@ RSpec.describe "the real Rock package sets" do
       run = relspec("plan", File.join(dir, "rock.yml"))
       expect(run.exit_code).to eq(0), run.stderr
       expect(run.stdout).to start_with("rock: 4 packages on 1 targets")
-      built = run.stdout[/^builds on bookworm\/amd64:\n(.*?)\n\n/m, 1].lines.grep(/^  \S/).map { |line| line.split.first }
+      built = run.stdout[%r{^builds on bookworm/amd64:\n(.*?)\n\n}m, 1].lines.grep(/^  \S/).map { |line| line.split.first }
       expect(built).to eq(%w[facets tools/metaruby typelib utilrb])
       expect(run.stdout).to include("the bookworm archive has no ruby-facets: gem facets is packaged here")
       expect(run.stdout).not_to include("lacks")

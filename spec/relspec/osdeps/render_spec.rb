@@ -114,7 +114,7 @@ RSpec.describe "relspec osdeps render" do
   it "keys osdeps entries so that the rock-osdeps package set finds them for every target's OS labels" do
     lookup = lambda do |entry, names, versions|
       by_labels = entry[names.first] || entry[names.join(",")]
-      by_labels&.find { |labels, _| (labels.split(",") & (versions - ["default"])).any? }&.last
+      by_labels&.find { |labels, _| labels.split(",").intersect?(versions - ["default"]) }&.last
     end
     data = YAML.load_file(@amd64)
     { [%w[ubuntu debian], %w[18.04 18.04.5 lts bionic beaver default]] => "bionic",

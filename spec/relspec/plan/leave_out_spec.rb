@@ -51,7 +51,7 @@ RSpec.describe "leave_out on the real Rock layout" do
   it "plans the layout without what bookworm lacks, and says what was left out and why" do
     run = relspec("plan", "specs/rock.yml", chdir: @dir)
     expect(run.exit_code).to eq(0), run.stderr
-    gaps = run.stdout[/^not available on bookworm\/amd64:\n(.*?)\n\n/m, 1]
+    gaps = run.stdout[%r{^not available on bookworm/amd64:\n(.*?)\n\n}m, 1]
     qt4.each do |name|
       line = gaps.lines.find { |entry| entry.start_with?("  #{name} ") }
       expect(line).to end_with(%(left out by "#{qt4_match}" (needs qt4, which bookworm lacks)\n))
@@ -59,7 +59,7 @@ RSpec.describe "leave_out on the real Rock layout" do
     # base/orogen/types requires external/sisl: left out with it
     expect(gaps).to include(%(  base/orogen/types                   depends on external/sisl, which is unavailable because ) +
                             %(left out by "external/sisl" (not among the repositories of ../shared)\n))
-    built = run.stdout[/^builds on bookworm\/amd64:\n(.*?)\n\n/m, 1].lines.grep(/^  \S/).map { |line| line.split.first }
+    built = run.stdout[%r{^builds on bookworm/amd64:\n(.*?)\n\n}m, 1].lines.grep(/^  \S/).map { |line| line.split.first }
     # base/types and tools/orocos.rb only optionally depend on gui/vizkit3d and tools/pocolog: built without them
     expect(built).to include("typelib", "rtt", "rtt_typelib", "orogen", "base/orogen/std", "base/types", "tools/orocos.rb")
     expect(built & (qt4 + %w[base/orogen/types external/sisl tools/pocolog])).to eq([])
@@ -87,7 +87,7 @@ RSpec.describe "leave_out on the real Rock layout" do
     expect(run.exit_code).to eq(0), run.stderr
     expect(run.stdout).to include("spec: leave_out entry tools/orocos.rb added (its CORBA transport is not built yet) " \
                                   "→ 1 decision (bookworm/amd64)")
-    change = run.stdout[/^ +decision changed +tools\/orocos\.rb: .*\n.*\n/]
+    change = run.stdout[%r{^ +decision changed +tools/orocos\.rb: .*\n.*\n}]
     expect(change).to match(/build rock-rock-ruby-tools-orocos\.rb \S+ → unavailable\n/)
     expect(change.lines.last.strip).to eq('left out by "tools/orocos.rb" (its CORBA transport is not built yet)')
   end

@@ -27,7 +27,7 @@ RSpec.describe Relspec::Builder::BuildPlan do
     described_class.parse(text, dir: "out/r/bookworm-amd64")
     nil
   rescue Relspec::InvalidInput => e
-    e.diagnostics.map(&:to_s).join("\n")
+    e.diagnostics.join("\n")
   end
 
   it "reads back what it writes, in order" do
@@ -39,7 +39,7 @@ RSpec.describe Relspec::Builder::BuildPlan do
 
   {
     "builds as a mapping" => [[/builds:\n(.|\n)*/, "builds: {a: 1}\n"], 4, "builds must be a list of builds"],
-    "a build as text" => [[/-\n  package: base\/a\n(  .*\n)*?(?=-)/, "- oops\n"], 5, "builds.0 must be a mapping"],
+    "a build as text" => [[%r{-\n  package: base/a\n(  .*\n)*?(?=-)}, "- oops\n"], 5, "builds.0 must be a mapping"],
     "a dsc outside the folder" => [["dsc: rock-r-base-a/a.dsc", "dsc: ../../etc/passwd"], 9, "is not a plain path"],
     "a source that is no name" => [["source: rock-r-base-a\n", "source: ../x\n"], 7, 'invalid source name "../x"'],
     "an invalid version" => [['"2.0-1~bookworm"', '"2.0 beta"'], 14, 'invalid Debian version "2.0 beta"'],

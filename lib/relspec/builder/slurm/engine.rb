@@ -236,7 +236,7 @@ module Relspec
           return "#{entry.source}: Slurm job #{id} left the queue without a result, see #{log}" unless job
 
           exit = result ? result.exit_status : job.exit_code
-          "#{entry.source}: Slurm job #{id} #{job.state}#{exit ? " (exit status #{exit})" : ''}, see #{log}"
+          "#{entry.source}: Slurm job #{id} #{job.state}#{" (exit status #{exit})" if exit}, see #{log}"
         end
 
         def failed_root(entry)

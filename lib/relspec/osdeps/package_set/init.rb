@@ -76,7 +76,7 @@ module RelspecPackageSet
       return release if names.include?(release)
 
       refuse("#{path} chooses the release #{release.inspect}, which this package set does not have " \
-           "(it has #{names.join(', ')})")
+             "(it has #{names.join(', ')})")
     end
 
     def this_system

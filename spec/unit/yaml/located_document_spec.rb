@@ -1,6 +1,6 @@
 # frozen_string_literal: true
 
-require "spec_helper"
+require_relative "../unit_helper"
 
 RSpec.describe Relspec::Yaml::LocatedDocument do
   def parse(text)

@@ -1,6 +1,6 @@
 # frozen_string_literal: true
 
-require "spec_helper"
+require_relative "../unit_helper"
 require "relspec/debian/debian_dir"
 require "relspec/catalog/package"
 require "relspec/release_spec/distribution"

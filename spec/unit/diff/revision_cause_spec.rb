@@ -1,6 +1,6 @@
 # frozen_string_literal: true
 
-require "spec_helper"
+require_relative "../unit_helper"
 require "relspec/diff"
 
 # A new Debian revision of an unchanged source must say what moved. The

@@ -1,6 +1,6 @@
 # frozen_string_literal: true
 
-require "spec_helper"
+require_relative "../unit_helper"
 
 RSpec.describe Relspec::ReleaseSpec::PackagePattern do
   names = %w[base/types base/types_ruby simulation/gazebo simulation/models/world drivers/orogen/iodrivers_base]
