@@ -1,9 +1,8 @@
 # frozen_string_literal: true
 
 require "thor"
+require_relative "strict_commands"
 require_relative "checked_options"
-require "fileutils"
-require_relative "../atomic_file"
 require_relative "../error"
 
 module Relspec
@@ -12,9 +11,9 @@ module Relspec
     # release's binaries (rock-osdeps package set format).
     class OsdepsCommands < Thor
       include CheckedOptions
+      include StrictCommands
 
       namespace "osdeps"
-
 
       def self.exit_on_failure?
         true
@@ -32,19 +31,14 @@ module Relspec
       option :timeout, type: :numeric, default: 10, desc: "HTTP timeout in seconds"
       def render(path)
         require_relative "../plan"
-        require_relative "../osdeps/renderer"
-        result = Plan.compute(path, timeout: options[:timeout])
+        require_relative "../project"
+        require_relative "../osdeps/files"
+        result = Plan.run(path, timeout: options[:timeout])
         effective = result.resolution.effective
-        present, missing = presence(result)
-        files = Osdeps::Renderer.render(result.plan, effective.distributions, present: present)
-        dir = File.join(File.dirname(result.lock_path), "osdeps")
-        FileUtils.mkdir_p(dir)
-        files.each do |arch, text|
-          target = File.join(dir, Osdeps::Renderer.file_name(effective.release, arch))
-          changed = AtomicFile.update(target, text)
-          $stderr.puts("#{changed ? 'wrote' : 'unchanged'} #{target}")
-        end
-        missing.each { |line| $stderr.puts("missing from the repository: #{line}") }
+        dir = Project.new(result.project_root).osdeps_dir(effective.release)
+        written = Osdeps::Files.write_release(result.plan, effective, dir, held_only: options[:from_repository])
+        written.written.each { |target, changed| $stderr.puts("#{changed ? 'wrote' : 'unchanged'} #{target}") }
+        written.missing.each { |line| $stderr.puts("missing from the repository: #{line}") }
       end
 
       desc "index", "Write releases/releases.yml, the release index of the rock-osdeps package set"
@@ -54,14 +48,15 @@ module Relspec
       def index
         require_relative "../release_spec"
         require_relative "../osdeps/release_index"
-        library = spec_library
+        require_relative "../osdeps/files"
+        require_relative "../project"
         if options[:repo_url] && !Osdeps::IndexCheck.http?(options[:repo_url])
           raise Error, "--repo-url must be an http(s) URL, not #{options[:repo_url].inspect}"
         end
-        text = Osdeps::ReleaseIndex.render(indexed_releases(library), repo_url: options[:repo_url], public_key: options[:public_key])
-        target = File.join(File.dirname(options[:specs]), "releases", "releases.yml").delete_prefix("./")
-        FileUtils.mkdir_p(File.dirname(target))
-        $stderr.puts("#{AtomicFile.update(target, text) ? 'wrote' : 'unchanged'} #{target}")
+        text = Osdeps::ReleaseIndex.render(indexed_releases(spec_library), repo_url: options[:repo_url],
+                                                                           public_key: options[:public_key])
+        target = Project.new(File.dirname(options[:specs])).release_index
+        $stderr.puts("#{Osdeps::Files.write_index(target, text) ? 'wrote' : 'unchanged'} #{target}")
       end
 
       desc "package-set", "Write relspec's autoproj package set for the releases of specs/ (default: build/package-set)"
@@ -120,18 +115,8 @@ module Relspec
       def indexed_releases(library)
         require_relative "../osdeps/indexed_release"
         library.paths.map do |path|
-          Osdeps::IndexedRelease.from_effective(ReleaseSpec.resolve(path).effective, spec_path: path)
+          Osdeps::IndexedRelease.from_effective(ReleaseSpec.resolve(path).effective)
         end
-      end
-
-      # With --from-repository, a filter keeping what the repositories hold,
-      # and the planned packages that are missing.
-      def presence(_result)
-        return [->(_target, _decision) { true }, []] unless options[:from_repository]
-
-        require_relative "../osdeps/repository_presence"
-        presence = Osdeps::RepositoryPresence.new
-        [presence.to_proc, presence.missing]
       end
     end
   end

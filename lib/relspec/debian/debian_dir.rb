@@ -70,7 +70,7 @@ module Relspec
       Context = Struct.new(:source, :section, :maintainer, :build_depends, :depends, :homepage, :architecture,
                            :synopsis, :long_description, :codename, :release, :package_name, :vcs_url, :vcs_ref,
                            :commit, :date, :copyright_holders, :license, :license_name, :common_license, :public_source, :build_type, :install_dir, :dh_options,
-                           :canonical, :dependency_dirs, :build_dirs, :gem_dir, :cmake_options, :guard, :gem_file, :version,
+                           :canonical, :dependency_dirs, :gem_dir, :cmake_options, :guard, :gem_file, :version,
                            :body, :ruby_lib_dirs, keyword_init: true)
 
       # Each template becomes a method of Context, compiled once: evaluating
@@ -100,7 +100,7 @@ module Relspec
           public_source: public_url(package.vcs.url.to_s),
           build_type: package.build_type, install_dir: install_dir, dh_options: dh_options(package.build_type),
           canonical: Naming.canonical(package.name), dependency_dirs: dependency_dirs,
-          build_dirs: @in.fetch(:closure, dependency_dirs), gem_dir: GEM_DIR, cmake_options: cmake_options,
+          gem_dir: GEM_DIR, cmake_options: cmake_options,
           guard: "RELSPEC_ENV_#{source.gsub(/[^A-Za-z0-9]/, '_')}", gem_file: gem_file, ruby_lib_dirs: ruby_lib_dirs
         }
       end
@@ -278,7 +278,7 @@ module Relspec
         url.match?(%r{\A(https?|git|ssh)://|\A[\w.-]+@[\w.-]+:}) ? url : nil
       end
 
-      # Packages of a release live under /opt by design (DESIGN §5): lintian
+      # Packages of a release live under /opt by design (docs/compile.md): lintian
       # names /opt/rock/, /opt/rock/<release>/ and every path of the prefix.
       # Their libraries are not on ld.so's path, so Rock's CMake gives
       # programs a RUNPATH to the release's prefixes (the only way they run

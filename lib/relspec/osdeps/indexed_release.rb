@@ -10,13 +10,14 @@ module Relspec
     # targets ({codename => [arch]}).
     IndexedRelease = Struct.new(:name, :parents, :url, :trusted, :keyring, :repository_path, :install_prefix,
                                 :separate_prefixes, :targets, :locations, keyword_init: true) do
-      # +spec_path+: the spec's file, which repository paths are relative to.
-      def self.from_effective(spec, spec_path: nil)
-        repository = spec["repository"] || {}
-        path = ->(key) { repository[key] && spec_path && File.expand_path(repository[key], File.dirname(spec_path)) }
-        new(name: spec.release, parents: Array(spec["parent"]), url: repository["url"]&.chomp("/"),
-            trusted: repository["trusted"] == true, keyring: path.call("keyring"), repository_path: path.call("path"),
-            install_prefix: spec["install_prefix"], separate_prefixes: spec["separate_prefixes"] != false,
+      # +spec+: an EffectiveSpec; its typed values resolve repository paths
+      # against the spec that wrote them.
+      def self.from_effective(spec)
+        repository = spec.repository
+        prefixes = spec.prefixes
+        new(name: spec.release, parents: spec.parents, url: repository&.url&.chomp("/"),
+            trusted: repository&.trusted == true, keyring: repository&.keyring, repository_path: repository&.path,
+            install_prefix: prefixes.install_prefix, separate_prefixes: prefixes.separate_prefixes,
             targets: spec.targets.to_h { |codename, archs| [codename.to_s, Array(archs).map(&:to_s)] },
             locations: %w[release parent repository install_prefix].to_h { |key| [key, spec.origin(key)&.location] })
       end

@@ -8,7 +8,7 @@ RSpec.describe "relspec osdeps select" do
   def packages
     {
       "base/cmake" => ["rock-rel-base-cmake", nil, nil],
-      "base/types" => ["rock-rel-base-types", "rock-rel-base-cmake", "rock-typekit"],
+      "base/types" => %w[rock-rel-base-types rock-rel-base-cmake rock-typekit],
       "base/logging" => ["rock-rel-base-logging", "rock-rel-base-cmake (>= 1.0)", nil],
       "drivers/iodrivers" => ["rock-rel-drivers-iodrivers", "rock-rel-base-types | rock-rel-base-logging", nil],
       "tools/monitor" => ["rock-rel-tools-monitor", "rock-rel-drivers-iodrivers, libc6", nil],
