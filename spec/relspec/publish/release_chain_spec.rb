@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require "spec_helper"
+require_relative "../../support/signing_key"
 require "json"
 
 # A base release published signed, and a child release that inherits from
@@ -39,7 +40,7 @@ RSpec.describe "a signed release chain, published and inherited" do
   end
 
   after(:all) do
-    system(gpg_env, "gpgconf", "--kill", "gpg-agent", out: File::NULL, err: File::NULL)
+    @signing_key&.stop
     FileUtils.rm_rf(@dir)
   end
 
@@ -48,12 +49,8 @@ RSpec.describe "a signed release chain, published and inherited" do
   end
 
   def generate_key
-    output, status = Open3.capture2e(gpg_env, "gpg", "--batch", "--passphrase", "", "--quick-gen-key",
-                                     "Relspec Test <test@example.org>", "future-default", "sign", "never")
-    raise output unless status.success?
-
-    output, = Open3.capture2e(gpg_env, "gpg", "--batch", "--list-secret-keys", "--with-colons")
-    output[/^fpr:+(\h{40}):/, 1]
+    @signing_key = SigningKey.new(@gnupg)
+    @signing_key.fingerprint
   end
 
   def run!(*args)

@@ -210,14 +210,15 @@ module RelspecPackageSet
     end
 
     # Only the release's sources, so any error apt reports is theirs. apt
-    # exits 0 when a Release does not verify but it has lists from before
-    # (it keeps using those): that is refused here as well.
+    # exits 0 when a repository cannot be reached, or its Release does not
+    # verify but it has lists from before (it keeps using those): refused
+    # here as well, or autoproj would fail later with "Unable to locate".
     def update
       Autoproj.message "  relspec: apt-get update for #{LIST}"
       command = ["apt-get", "update", "-o", "Dir::Etc::sourcelist=#{LIST}", "-o", "Dir::Etc::sourceparts=-",
                  "-o", "APT::Get::List-Cleanup=0"]
       command.unshift("sudo") unless Process.uid.zero?
-      run(*command, refuse: /^(W: GPG error|E: )/)
+      run(*command, refuse: /^(Err:|W: GPG error|E: )/)
     end
 
     def run(*command, stdin: "", refuse: nil)
