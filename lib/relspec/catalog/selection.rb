@@ -88,6 +88,9 @@ module Relspec
           next if seen[name] || skip.key?(name)
 
           seen[name] = true
+          # what only a left-out package needs is not part of the release
+          next if @leave_out.call(name)
+
           package = @catalog.package(name)
           queue.concat(required(package))
           queue.concat(package.optional_dependencies.reject { |dep| dropped?(dep) || !@catalog.package?(dep) })
