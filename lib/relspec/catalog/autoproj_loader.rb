@@ -14,6 +14,8 @@ require_relative "copyright_holders"
 
 module Relspec
   class Catalog
+    # Loads an autoproj workspace in-process (its manifest, package sets and
+    # package manifests) the way autoproj itself would, for the catalog.
     module AutoprojLoader
       # Raised for workspace problems a user must fix; printed as a diagnostic.
       class WorkspaceProblem < StandardError
@@ -112,7 +114,7 @@ module Relspec
         raise unless (missing = e.message[/'([^']+)' is neither a remote source specification, nor an existing local directory/, 1])
 
         raise WorkspaceProblem.new("missing-package-set", "package set #{missing} does not exist", file: "autoproj/manifest",
-                                                                                                  hint: "check `package_sets:` in autoproj/manifest, or run `autoproj update`")
+                                                                                                   hint: "check `package_sets:` in autoproj/manifest, or run `autoproj update`")
       ensure
         reset_global_state
       end
@@ -137,7 +139,7 @@ module Relspec
           line = invalid[2][/Line: (\d+)/, 1]&.to_i
           reason = invalid[2].lines.first.strip
           return WorkspaceProblem.new("package-manifest", "broken manifest.xml: #{reason}", file: invalid[1], line: line,
-                                                                                             hint: "fix the XML of the package's manifest.xml")
+                                                                                            hint: "fix the XML of the package's manifest.xml")
         end
         WorkspaceProblem.new("autoproj", message.lines.first(6).join.strip, hint: "autoproj could not load the workspace")
       end
@@ -253,7 +255,7 @@ module Relspec
       def os_dependencies_of(autobuild, resolved)
         _, optional = autobuild.partition_optional_dependencies
         optional -= autobuild.os_packages.to_a
-        kept, missing = optional.partition { |name| (resolved[name].keys & %w[nonexistent unresolved]).empty? }
+        kept, missing = optional.partition { |name| !resolved[name].keys.intersect?(%w[nonexistent unresolved]) }
         merged = merge_classified((autobuild.os_packages.to_a + kept).sort.map { |name| resolved[name] })
         merged["optional_missing"] = missing.sort unless missing.empty?
         merged
@@ -365,4 +367,3 @@ module Relspec
     end
   end
 end
-

@@ -70,8 +70,10 @@ module Relspec
           if @catalog.metapackage?(name)
             @catalog.metapackages[name].reject { |member| dropped?(member) }
           elsif @catalog.package?(name)
-            problem("excluded-package", "#{name} is selected but excluded by the workspace manifest",
-                    location: @locate.call(name)) if excluded?(name)
+            if excluded?(name)
+              problem("excluded-package", "#{name} is selected but excluded by the workspace manifest",
+                      location: @locate.call(name))
+            end
             [name]
           else
             unknown(name)

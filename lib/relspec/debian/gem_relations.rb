@@ -36,6 +36,7 @@ module Relspec
         if operator == "~>"
           return ["#{deb} (>= #{PackageVersion.of_gem(version)})", "#{deb} (<< #{PackageVersion.of_gem(version.bump)})"]
         end
+
         debian = OPERATORS[operator]
         debian ? ["#{deb} (#{debian} #{PackageVersion.of_gem(version)})"] : []
       end

@@ -3,7 +3,7 @@
 module Relspec
   module Debian
     # Debian package names of a release, compatible with the existing Rock
-    # releases (DESIGN §5): `rock-master-20.06-base-types`,
+    # releases (docs/compile.md, Names and versions): `rock-master-20.06-base-types`,
     # `rock-master-20.06-ruby-tools-orocos.rb`, `rock-master-20.06-meta-rock.core`.
     module Naming
       module_function

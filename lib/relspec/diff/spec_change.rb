@@ -18,7 +18,7 @@ module Relspec
                else key
                end
         values = [old, new].compact
-        detail = if change == "added" || change == "removed" then values.empty? ? "" : " (#{values.join})"
+        detail = if %w[added removed].include?(change) then values.empty? ? "" : " (#{values.join})"
                  else " (#{old || 'none'} → #{new || 'none'})"
                  end
         "#{what} #{change}#{detail}"

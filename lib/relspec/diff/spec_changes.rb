@@ -39,7 +39,13 @@ module Relspec
           b = after[match]
           next if a == b
 
-          change = if a.nil? then "added" elsif b.nil? then "removed" else "changed" end
+          change = if a.nil?
+                     "added"
+                   elsif b.nil?
+                     "removed"
+                   else
+                     "changed"
+                   end
           reason = ->(entry) { entry && entry["reason"] ? entry["reason"].to_s : nil }
           { key: key, change: change, subject: match, old: (reason.call(a) unless change == "added"),
             new: (reason.call(b) unless change == "removed") }
@@ -56,7 +62,13 @@ module Relspec
         (before.keys | after.keys).sort.filter_map do |package|
           next if before[package] == after[package]
 
-          change = if !before.key?(package) then "added" elsif !after.key?(package) then "removed" else "moved" end
+          change = if !before.key?(package)
+                     "added"
+                   elsif !after.key?(package)
+                     "removed"
+                   else
+                     "moved"
+                   end
           { key: "pins", change: change, subject: package, old: pin_text(before[package]), new: pin_text(after[package]) }
         end
       end

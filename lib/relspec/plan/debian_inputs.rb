@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require_relative "../debian/control_relations"
+require_relative "../release_spec/values/prefixes"
 
 module Relspec
   module Plan
@@ -15,10 +16,9 @@ module Relspec
         @effective = effective
         @ancestors = ancestors.to_h { |ancestor| [ancestor.name, ancestor] }
         @release_catalog = release_catalog
-        # install folders by where a package comes from: asked once per
-        # package of every closure, so computed once
+        # install folders by where a package comes from: every dependent
+        # asks, so computed once
         @install_dirs = {}
-        @closures = Hash.new { |hash, target| hash[target] = {} }
       end
 
       # +decisions+: the target's decisions, those of dependencies settled.
@@ -27,9 +27,9 @@ module Relspec
         os = package.os_dependencies_for(target.codename)
         {
           package: package, deb_name: decision.deb_name, upstream: upstream, codename: target.codename,
-          release: @effective.release, maintainer: @effective["maintainer"], install_dir: install_dir_of(decision),
+          release: @effective.release, maintainer: @effective.maintainer, install_dir: install_dir_of(decision),
           debhelper_compat: @effective.distributions.fetch(target.codename).debhelper_compat,
-          dependencies: dependencies_of(package, decisions), closure: closure_dirs(target, package, decisions), apt: os.apt,
+          dependencies: dependencies_of(package, decisions), apt: os.apt,
           gems: Debian::ControlRelations.distribution_gems(os, @release_catalog.gems.keys),
           gem: @release_catalog.gems[package.name]
         }
@@ -57,8 +57,8 @@ module Relspec
           ancestor = @ancestors.fetch(decision.ancestor)
           prefix_dir(ancestor.install_prefix, ancestor.name, ancestor.separate_prefixes, decision.deb_name)
         else
-          prefix_dir(@effective["install_prefix"], @effective.release, @effective["separate_prefixes"] != false,
-                     decision.deb_name)
+          prefixes = @effective.prefixes
+          prefix_dir(prefixes.install_prefix, @effective.release, prefixes.separate_prefixes, decision.deb_name)
         end
       end
 
@@ -69,28 +69,9 @@ module Relspec
         end
       end
 
-      # The prefixes of the whole dependency closure, own and inherited, each
-      # once: the direct dependencies by name, then each one's closure in
-      # that order. A dependency's CMake configuration or pkg-config file
-      # names its own dependencies, which the build must find too. Memoised
-      # per target: where a package installs is decided before versions are,
-      # so it does not change while the target's builds are settled.
-      def closure_dirs(target, package, decisions)
-        memo = @closures[target]
-        memo.fetch(package.name) do
-          direct = package.build_dependencies.filter_map { |name| decisions[name] && [name, decisions[name]] }
-          dirs = direct.filter_map { |_, decision| install_dir_of(decision) }
-          direct.each do |name, _|
-            dirs.concat(closure_dirs(target, @release_catalog.catalog.package(name), decisions)) if
-              @release_catalog.catalog.package?(name)
-          end
-          memo[package.name] = dirs.uniq.freeze
-        end
-      end
-
       def prefix_dir(install_prefix, release, separate, deb_name)
-        base = File.join(install_prefix, release)
-        separate ? File.join(base, deb_name) : base
+        ReleaseSpec::Prefixes.new(install_prefix: install_prefix, separate_prefixes: separate, package_prefix: nil)
+                             .install_dir(release, deb_name)
       end
     end
   end

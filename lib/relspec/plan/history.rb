@@ -31,12 +31,20 @@ module Relspec
       # A history that also records +version+ (a PackageVersion) of
       # +package+ made from +debian_digest+.
       def with(target, package, version, debian_digest)
-        key = target.to_s
-        packages = @builds.fetch(key, EMPTY)
-        upstreams = packages.fetch(package, EMPTY).merge(
-          version.upstream => Build.new(revision: version.revision, debian_digest: debian_digest).freeze
-        )
-        History.new(@builds.merge(key => packages.merge(package => upstreams.freeze)))
+        with_all([[target, package, version, debian_digest]])
+      end
+
+      # A history that also records every [target, package, version,
+      # debian_digest] of +builds+, copied once (a copy per build made
+      # recording a plan's builds grow with the square of their number).
+      def with_all(builds)
+        added = builds.each_with_object({}) do |(target, package, version, debian_digest), out|
+          ((out[target.to_s] ||= {})[package] ||= {})[version.upstream] =
+            Build.new(revision: version.revision, debian_digest: debian_digest).freeze
+        end
+        History.new(@builds.merge(added) do |_, packages, new_packages|
+          packages.merge(new_packages) { |_, upstreams, new_upstreams| upstreams.merge(new_upstreams) }
+        end)
       end
 
       def size

@@ -3,10 +3,12 @@
 require "digest"
 require "json"
 require_relative "history"
+require_relative "../project"
+require_relative "cause"
 
 module Relspec
   module Plan
-    # releases/<release>/lock.yml (DESIGN §6, §12) as a value: what a plan
+    # releases/<release>/lock.yml (docs/plan.md, The lock file) as a value: what a plan
     # decided, what it read to decide it, and the history of every build the
     # release has made. LockGenerator writes it and LockParser reads it back,
     # each the mirror of the other (as Bundler's LockfileGenerator and
@@ -16,9 +18,29 @@ module Relspec
       FORMAT_VERSION = 2
 
       # One recorded decision: +decision+ is "inherit", "build", "published",
-      # "system" or "unavailable"; +version+ a string as written; +depends+
+      # "system" or "unavailable"; +version+ a string as written; +causes+
+      # the cause chain, one line per step (a plan gives the Cause itself,
+      # spelled out when read: the chains of a deep graph add up to the
+      # square of its depth, which only a written lock pays); +depends+
       # (builds; nil in locks written before it was recorded): Decision#depends.
-      Entry = Struct.new(:decision, :deb, :version, :from, :causes, :depends, :debian_digest, keyword_init: true) do
+      class Entry
+        attr_reader :decision, :deb, :version, :from, :depends, :debian_digest
+
+        def initialize(decision:, deb: nil, version: nil, from: nil, causes: nil, depends: nil, debian_digest: nil)
+          @decision = decision
+          @deb = deb
+          @version = version
+          @from = from
+          @causes = causes
+          @depends = depends
+          @debian_digest = debian_digest
+          freeze
+        end
+
+        def causes
+          @causes.is_a?(Cause) ? @causes.chain : @causes
+        end
+
         def to_h
           { "decision" => decision, "deb" => deb, "version" => version, "from" => from, "causes" => causes,
             "depends" => depends, "debian_digest" => debian_digest }.compact
@@ -47,7 +69,7 @@ module Relspec
         targets = plan.targets.sort_by { |target, _| target.to_s }.to_h do |target, decisions|
           entries = decisions.transform_values { |decision| entry_of(decision) }
           plan.unavailable.fetch(target).each do |name, cause|
-            entries[name] = Entry.new(decision: "unavailable", causes: cause.chain).freeze
+            entries[name] = Entry.new(decision: "unavailable", causes: cause).freeze
           end
           [target.to_s, entries.sort.to_h.freeze]
         end
@@ -58,16 +80,16 @@ module Relspec
 
       def self.entry_of(decision)
         Entry.new(decision: decision.kind.to_s, deb: decision.deb_name, version: decision.version&.to_s,
-                  from: decision.ancestor, causes: decision.cause&.chain, depends: decision.depends,
+                  from: decision.ancestor, causes: decision.cause, depends: decision.depends,
                   debian_digest: decision.debian_digest).freeze
       end
 
       def self.history_with(history, plan)
-        plan.targets.reduce(history) do |result, (target, decisions)|
-          decisions.values.select { |decision| decision.build? || decision.published? }.reduce(result) do |inner, decision|
-            inner.with(target, decision.package, decision.version, decision.debian_digest)
+        history.with_all(plan.targets.flat_map do |target, decisions|
+          decisions.values.select { |decision| decision.build? || decision.published? }.map do |decision|
+            [target, decision.package, decision.version, decision.debian_digest]
           end
-        end
+        end)
       end
 
       def self.ancestors_of(plan)
@@ -79,7 +101,7 @@ module Relspec
       private_class_method :entry_of, :history_with, :ancestors_of
 
       def self.path(root, release)
-        root == "." ? File.join("releases", release, "lock.yml") : File.join(root, "releases", release, "lock.yml")
+        Project.new(root).lock_path(release)
       end
 
       # The digest of what the spec means (its effective values), so a lock

@@ -50,7 +50,7 @@ module Relspec
         location = @document.location([])
         if data.nil?
           Diagnostic.error("missing-key", "the file is empty", location: location,
-                                                                hint: "a spec starts with `release: <name>`")
+                                                               hint: "a spec starts with `release: <name>`")
         else
           Diagnostic.error("wrong-type", "a release spec must be a mapping of keys to values, found #{ValueKind.of(data)}",
                            location: location, hint: "a spec starts with `release: <name>`")

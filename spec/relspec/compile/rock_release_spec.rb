@@ -2,7 +2,7 @@
 
 require "spec_helper"
 require "yaml"
-require_relative "../../support/rock_workspace"
+require_relative "../../support/rock_workspace_context"
 require_relative "../../support/rock_gems"
 require_relative "../../support/installed_system"
 
@@ -19,15 +19,13 @@ require_relative "../../support/installed_system"
 RSpec.describe "a release of real Rock packages" do
   let(:release) { "rock" }
 
-  before(:all) do
-    need_fixture(RockWorkspace.available?, RockWorkspace.skip_reason)
+  include_context "a real Rock workspace"
 
-    @dir = Dir.mktmpdir("relspec-rock")
-    @workspace = RockWorkspace.new(File.join(@dir, "ws"))
-    @workspace.create
+  before(:all) do
     @facets = RockGems.facets(File.join(@dir, "gems"))
     # offline, a stand-in with the two files utilrb loads; CI always builds the real gem
     raise "facets-3.1.0.gem is neither in #{RockGems::CACHE} nor fetchable" if @facets == :stand_in && ENV["CI"]
+
     need_fixture(RockGems.rice(File.join(@dir, "gems")), "rice-3.0.0.gem is neither in #{RockGems::CACHE} nor fetchable")
     FileUtils.mkdir_p(File.join(@dir, "specs"))
     File.write(File.join(@dir, "specs", "rock.yml"), <<~YAML)
@@ -63,8 +61,6 @@ RSpec.describe "a release of real Rock packages" do
     # a Rock user's machine has autoproj's own utilrb and facets, newer than the release's
     @system.install_gems(%w[utilrb facets].map { |name| (Gem.loaded_specs[name] || Gem::Specification.find_by_name(name)).cache_file })
   end
-
-  after(:all) { FileUtils.rm_rf(@dir) if @dir }
 
   # The end of the log of each package that did not build, for the failure message.
   def failed_logs
@@ -118,13 +114,14 @@ RSpec.describe "a release of real Rock packages" do
 
   it "builds base/types against its whole dependency closure and with the package set's defines" do
     rules = debian_file("rock-rock-base-types", "rules")
-    # base/cmake is not a direct dependency's prefix only: base/logging's CMake needs it too; rice is
-    # there because base/types' Ruby bindings (an optional dependency the release can provide) need it
-    expect(rules).to include("RELSPEC_CLOSURE := #{prefix('rock-rock-base-cmake')} " \
+    # debian/rules names the direct dependencies only (rice: base/types' Ruby bindings, an optional
+    # dependency the release can provide); the search paths of the whole closure come from their
+    # installed env.sh at build time (spec/relspec/debian/build_environment_spec.rb), which is how
+    # base/types found them in the clean chroot above
+    expect(rules).to include("RELSPEC_DEPENDENCIES := #{prefix('rock-rock-base-cmake')} " \
                              "#{prefix('rock-rock-base-logging')} #{prefix('rock-rock-ruby-rice')}\n")
-    # the search paths (CMake, pkg-config, Ruby, PATH) are derived from that one list
-    expect(rules).to include("export CMAKE_PREFIX_PATH := $(call relspec_path,$(RELSPEC_CLOSURE))\n")
-    expect(rules).to include("export PKG_CONFIG_PATH := $(call relspec_path,$(foreach dir,$(RELSPEC_CLOSURE),")
+    expect(rules).to include("export CMAKE_PREFIX_PATH := $(call relspec_get,CMAKE_PREFIX_PATH)\n")
+    expect(rules).to include("export PKG_CONFIG_PATH := $(call relspec_get,PKG_CONFIG_PATH)\n")
     expect(rules).to include("-DCMAKE_BUILD_TYPE=Release -DROCK_TEST_ENABLED=OFF -DUSE_SISL=OFF " \
                              "-DCMAKE_INSTALL_PREFIX=$(PREFIX)")
   end

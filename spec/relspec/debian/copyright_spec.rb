@@ -23,7 +23,7 @@ RSpec.describe "debian/copyright of a Rock package" do
   def render(package)
     input = { package: package, deb_name: "rock-r-base-cmake", upstream: "0.20210304.050607", codename: "bookworm",
               release: "r", maintainer: "Release Maintainer <release@example.org>",
-              install_dir: "/opt/rock/r/rock-r-base-cmake", dependencies: [], closure: [], apt: [], gems: [], gem: nil }
+              install_dir: "/opt/rock/r/rock-r-base-cmake", dependencies: [], apt: [], gems: [], gem: nil }
     Relspec::Debian::DebianDir.render(input, version: "0.20210304.050607-1~bookworm").transform_values(&:first)
   end
 

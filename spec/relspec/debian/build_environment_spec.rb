@@ -1,0 +1,83 @@
+# frozen_string_literal: true
+
+require "spec_helper"
+require "open3"
+require "relspec/debian/debian_dir"
+require "relspec/catalog/package"
+
+# The build environment of debian/rules (docs/compile.md): rules names only
+# the direct dependencies and takes the rest from their installed env.sh.
+# Real GNU make evaluates the rendered rules against prefixes where the
+# rendered env.sh files are installed, as a build-dependency leaves them.
+RSpec.describe "debian/rules build environment" do
+  around do |example|
+    Dir.mktmpdir("relspec-build-env") do |dir|
+      @root = dir
+      example.run
+    end
+  end
+
+  # Renders +name+ (depending on +dependencies+, already installed) and
+  # installs its env.sh into its prefix; returns its debian/rules.
+  def package(name, dependencies)
+    catalog_package = Relspec::Catalog::Package.new(
+      name: name, package_set: "set", build_type: "cmake", commit_time: "2021-03-04T05:06:07Z", source_dir: "src/#{name}",
+      vcs: Relspec::Catalog::Vcs.from_h("type" => "git", "url" => "https://example.org/x.git", "commit" => "a" * 40),
+      dependencies: dependencies
+    )
+    input = { package: catalog_package, deb_name: deb(name), upstream: "0.1", codename: "bookworm", release: "r",
+              maintainer: "M <m@example.org>", install_dir: prefix(name), apt: [], gems: [], gem: nil,
+              dependencies: dependencies.map { |dep| { deb_name: deb(dep), version: "0.1-1", install_dir: prefix(dep) } } }
+    files = Relspec::Debian::DebianDir.render(input, version: "0.1-1~bookworm").transform_values(&:first)
+    FileUtils.mkdir_p(prefix(name))
+    File.write(File.join(prefix(name), "env.sh"), files.fetch("env.sh"))
+    files.fetch("rules")
+  end
+
+  def deb(name) = "rock-r-#{name.tr('/', '-')}"
+  def prefix(name) = File.join(@root, "opt", deb(name))
+
+  # What a recipe of +rules+ sees, with a builder's environment that sets
+  # none of the search paths.
+  def build_environment(rules)
+    path = File.join(@root, "rules")
+    File.write(path, "#{rules}\nrelspec-show:\n\t@env\n")
+    out, err, status = Open3.capture3({ "CMAKE_PREFIX_PATH" => "/stale", "GEM_PATH" => nil, "RUBYLIB" => nil },
+                                      "make", "-s", "-f", path, "relspec-show", chdir: @root)
+    expect(status).to be_success, err
+    out.lines.to_h { |line| line.chomp.split("=", 2) }
+  end
+
+  it "names only the direct dependencies and still finds the whole closure" do
+    package("base/cmake", [])
+    package("base/logging", ["base/cmake"])
+    rules = package("base/types", ["base/logging"])
+    expect(rules).to include("RELSPEC_DEPENDENCIES := #{prefix('base/logging')}\n")
+    expect(rules).not_to include(prefix("base/cmake"))
+    env = build_environment(rules)
+    expect(env.fetch("CMAKE_PREFIX_PATH")).to eq("#{prefix('base/logging')}:#{prefix('base/cmake')}")
+    expect(env.fetch("PKG_CONFIG_PATH").split(":"))
+      .to eq(%w[base/logging base/cmake].flat_map { |name| ["#{prefix(name)}/lib/pkgconfig", "#{prefix(name)}/share/pkgconfig"] })
+    expect(env.fetch("LD_LIBRARY_PATH")).to eq("#{prefix('base/logging')}/lib:#{prefix('base/cmake')}/lib")
+    expect(env.fetch("PATH")).to start_with("#{prefix('base/logging')}/bin:#{prefix('base/cmake')}/bin:")
+    expect(env.fetch("RUBYLIB")).to eq("#{prefix('base/logging')}/lib:#{prefix('base/cmake')}/lib")
+    # GEM_PATH replaces RubyGems' default path: the default stays after the prefixes
+    expect(env.fetch("GEM_PATH")).to start_with("#{prefix('base/logging')}/gems:#{prefix('base/cmake')}/gems:")
+    expect(env.fetch("GEM_PATH").split(":").size).to be > 2
+  end
+
+  it "adds a dependency shared by two paths of the graph once" do
+    package("base/cmake", [])
+    package("base/logging", ["base/cmake"])
+    package("base/numeric", ["base/cmake"])
+    rules = package("base/types", ["base/logging", "base/numeric"])
+    expect(build_environment(rules).fetch("CMAKE_PREFIX_PATH").split(":"))
+      .to eq([prefix("base/numeric"), prefix("base/logging"), prefix("base/cmake")])
+  end
+
+  it "sets nothing for a package without dependencies of the release" do
+    rules = package("base/cmake", [])
+    expect(rules).not_to include("RELSPEC_DEPENDENCIES")
+    expect(build_environment(rules).fetch("CMAKE_PREFIX_PATH")).to eq("/stale")
+  end
+end

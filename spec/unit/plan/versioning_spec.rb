@@ -1,0 +1,68 @@
+# frozen_string_literal: true
+
+require "spec_helper"
+require "relspec/plan/versioning"
+require "relspec/plan/inventory"
+require "relspec/plan/target"
+
+# Versioning fed in memory: a History and the release repository's index as
+# plain values (docs/plan.md, "Versions").
+RSpec.describe Relspec::Plan::Versioning do
+  let(:target) { Relspec::Plan::Target.new("bookworm", "amd64").freeze }
+  let(:upstream) { "1.0.20200101.000000" }
+  let(:digest) { "d" * 64 }
+  # what an index entry of the repository answers
+  let(:index_entry) { Struct.new(:version) }
+
+  def history(revision: nil, digest: nil)
+    return Relspec::Plan::History.empty unless revision
+
+    Relspec::Plan::History.new("bookworm/amd64" => { "pkg/a" => { upstream => Relspec::Plan::History::Build.new(
+      revision: revision, debian_digest: digest
+    ) } })
+  end
+
+  def own(version = nil)
+    Relspec::Plan::OwnRepository.new(version ? { target => { "rock-r-pkg-a" => index_entry.new(version) } } : {})
+  end
+
+  def settle(history: self.history, own: self.own, digest: self.digest)
+    described_class.new(history: history, own: own)
+                   .settle(target: target, package: "pkg/a", deb_name: "rock-r-pkg-a", upstream: upstream, digest: digest)
+  end
+
+  it "starts a new upstream version at revision 1, not published" do
+    settled = settle
+    expect(settled.version.to_s).to eq("#{upstream}-1~bookworm")
+    expect(settled.published).to be_falsey
+  end
+
+  it "keeps the recorded revision for the same debian/ and says it is published when the repository holds it" do
+    settled = settle(history: history(revision: 3, digest: digest), own: own("#{upstream}-3~bookworm"))
+    expect(settled.version.revision).to eq(3)
+    expect(settled.published).to be(true)
+  end
+
+  it "is not published when the repository does not hold the recorded revision" do
+    settled = settle(history: history(revision: 3, digest: digest))
+    expect(settled.version.revision).to eq(3)
+    expect(settled.published).to be_falsey
+  end
+
+  it "goes one revision up when debian/ changed for the same upstream version" do
+    expect(settle(history: history(revision: 3, digest: "e" * 64)).version.revision).to eq(4)
+  end
+
+  it "never gives a revision the repository holds without the history vouching for it" do
+    # the lock was lost: revision 1 in the repository may be other bytes
+    expect(settle(own: own("#{upstream}-1~bookworm")).version.revision).to eq(2)
+    # the repository is ahead of the lock
+    expect(settle(history: history(revision: 2, digest: digest), own: own("#{upstream}-5~bookworm")).version.revision).to eq(6)
+  end
+
+  it "ignores what the repository holds of another upstream version or distribution" do
+    expect(settle(own: own("0.9.20190101.000000-7~bookworm")).version.revision).to eq(1)
+    expect(settle(own: own("#{upstream}-7~bullseye")).version.revision).to eq(1)
+    expect(settle(own: own("#{upstream}-7")).version.revision).to eq(1) # not a version relspec gives
+  end
+end
