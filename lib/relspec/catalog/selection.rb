@@ -12,9 +12,10 @@ module Relspec
     #
     # A package whose OS dependency is `nonexistent` on the codename cannot
     # be built there, and neither can what requires it; autoproj excludes
-    # them the same way. The spec's `leave_out` entries work the same way. They are left out of +names+ and kept in
-    # +unavailable+ with the reason, so a release can span distributions
-    # where part of the stack does not exist.
+    # them the same way, and the spec's `leave_out` entries work the same
+    # way. They are left out of +names+ and kept in +unavailable+ with the
+    # reason, so a release can span distributions where part of the stack
+    # does not exist.
     class Selection
       attr_reader :names, :roots, :unavailable
 
