@@ -9,7 +9,6 @@ require_relative "release_gems"
 require_relative "gem_resolution"
 require_relative "../display_path"
 require_relative "../release_spec/package_pattern"
-require_relative "../release_spec/leave_out"
 require_relative "../suggestion"
 
 module Relspec
@@ -86,7 +85,7 @@ module Relspec
           index ? spec_file.location(["select", index]) : nil
         end
         problems = []
-        leave_out = ReleaseSpec::LeaveOut.of(effective)
+        leave_out = effective.leave_out
         problems.concat(unmatched_leave_out(catalog, leave_out, effective))
         selections = effective.targets.keys.sort.to_h do |codename|
           [codename, Selection.resolve(catalog, select, codename: codename, workspace: workspace, locate: locate,

@@ -12,9 +12,10 @@ module Relspec
     #
     # A package whose OS dependency is `nonexistent` on the codename cannot
     # be built there, and neither can what requires it; autoproj excludes
-    # them the same way. The spec's `leave_out` entries work the same way. They are left out of +names+ and kept in
-    # +unavailable+ with the reason, so a release can span distributions
-    # where part of the stack does not exist.
+    # them the same way, and the spec's `leave_out` entries work the same
+    # way. They are left out of +names+ and kept in +unavailable+ with the
+    # reason, so a release can span distributions where part of the stack
+    # does not exist.
     class Selection
       attr_reader :names, :roots, :unavailable
 
@@ -90,6 +91,9 @@ module Relspec
           next if seen[name] || skip.key?(name)
 
           seen[name] = true
+          # what only a left-out package needs is not part of the release
+          next if @leave_out.call(name)
+
           package = @catalog.package(name)
           queue.concat(required(package))
           queue.concat(package.optional_dependencies.reject { |dep| dropped?(dep) || !@catalog.package?(dep) })

@@ -4,6 +4,7 @@ require_relative "distribution"
 require_relative "defaults"
 require_relative "values/repository_entry"
 require_relative "values/blacklist_entry"
+require_relative "values/leave_out"
 require_relative "values/pin"
 require_relative "values/prefixes"
 
@@ -57,6 +58,11 @@ module Relspec
       # BlacklistEntry values in spec order.
       def blacklist
         (values["blacklist"] || []).each_with_index.map { |entry, index| BlacklistEntry.from(entry, index) }
+      end
+
+      # The release's own LeaveOut (never inherited).
+      def leave_out
+        LeaveOut.from(values["leave_out"] || [])
       end
 
       # package name => Pin, merged over the ancestors.

@@ -106,9 +106,9 @@ RSpec.describe Relspec::Catalog::ReleaseCatalog do
     # gui/widgets is left out too: only gui/toolkit needed it
     expect(selections["buster"].names).to eq(%w[gui/plugins])
     expect(selections["buster"].unavailable.transform_values(&:to_h)).to eq(
-      "gui/app" => { osdeps: nil, dependency: "gui/toolkit" },
-      "gui/toolkit" => { osdeps: ["motif"], dependency: nil },
-      "gui/viewer" => { osdeps: nil, dependency: "gui/app" }
+      "gui/app" => { osdeps: nil, left_out: nil, dependency: "gui/toolkit" },
+      "gui/toolkit" => { osdeps: ["motif"], left_out: nil, dependency: nil },
+      "gui/viewer" => { osdeps: nil, left_out: nil, dependency: "gui/app" }
     )
   ensure
     FileUtils.rm_rf(base)

@@ -1,13 +1,13 @@
 # frozen_string_literal: true
 
-require_relative "package_pattern"
+require_relative "../package_pattern"
 
 module Relspec
   module ReleaseSpec
     # The spec's `leave_out`: packages a release (or some of its target
-    # distributions) does without, each with the reason. The one place the
-    # key is read; the catalog's selection leaves the matches out with what
-    # requires them, and the plan says why.
+    # distributions) does without, each with the reason. The catalog's
+    # selection leaves the matches out with what requires them, and the
+    # plan says why.
     class LeaveOut
       # +pattern+: PackagePattern; +codenames+: nil for every target;
       # +index+: the entry's place in the list, for locations.
@@ -19,10 +19,10 @@ module Relspec
 
       attr_reader :entries
 
-      # Entries whose match cannot be parsed are the file rules' errors; they
-      # are skipped here.
-      def self.of(effective)
-        entries = (effective["leave_out"] || []).each_with_index.filter_map do |entry, index|
+      # +list+: the `leave_out` entries as written. Entries whose match cannot
+      # be parsed are the file rules' errors; they are skipped here.
+      def self.from(list)
+        entries = list.each_with_index.filter_map do |entry, index|
           pattern = PackagePattern.parse(entry["match"])
           next if pattern.is_a?(PackagePattern::Invalid)
 
