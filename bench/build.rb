@@ -78,7 +78,7 @@ def slurm_comparison(dir, release, plan)
   puts "engine   wall      sum of durations  lower bound  ratio  overhead per job"
   { "local" => local, "slurm" => slurm }.each do |name, (w, total, bound)|
     puts format("%-6s %7.1f s %11.1f s %12.1f s %6.2f %9.2f s", name, w, total, bound, w / bound,
-                (w * JOBS - total) / COUNT)
+                ((w * JOBS) - total) / COUNT)
   end
   puts "(target: slurm ratio <= 1.3)"
 end

@@ -14,7 +14,7 @@ module Relspec
         word = word.to_s
         return word if word.match?(SAFE) && !word.start_with?("~")
 
-        "'#{word.gsub("'", %q('\\\\''))}'"
+        "'#{word.gsub("'", "'\\\\''")}'"
       end
 
       def join(words)
