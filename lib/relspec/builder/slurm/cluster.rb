@@ -1,7 +1,6 @@
 # frozen_string_literal: true
 
 require "json"
-require "open3"
 require_relative "../../error"
 require_relative "../tool"
 
@@ -88,8 +87,11 @@ module Relspec
           raise BuildError, "#{command.first} refused: #{output.strip.lines.last&.strip || "exit status #{status.exitstatus}"}"
         end
 
+        # IO.popen, not Open3: an interrupt while a command runs must not
+        # leave a reader thread to die noisily on a closed stream.
         def capture(*command)
-          Open3.capture2e(@env, *command)
+          output = IO.popen(@env, command, err: %i[child out], in: File::NULL, &:read)
+          [output, Process.last_status]
         rescue SystemCallError => e
           raise BuildError, "cannot run #{command.first}: #{e.message.sub(/ - .*\z/, '')} " \
                             "(the Slurm client tools: apt-get install slurm-client)"

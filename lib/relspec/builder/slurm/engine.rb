@@ -33,8 +33,6 @@ module Relspec
         CANCELLED = "CANCELLED"
         COMPLETED = "COMPLETED"
 
-        Settled = Struct.new(:outcome)
-
         def initialize(cluster:, settings:, backend:, notices: nil)
           @cluster = cluster
           @settings = settings
@@ -215,7 +213,8 @@ module Relspec
           state = job&.state
           if (state.nil? || state == COMPLETED) && result&.built?
             mismatch = result.mismatch
-            return report(built(entry, result)) unless mismatch
+            built = Scheduler::Outcome.new(entry: entry, status: :built, value: result.paths, duration: result.duration)
+            return report(built) unless mismatch
 
             return fail(entry, "#{entry.source}: #{mismatch['name']} is not what the job wrote (size or SHA256 " \
                                "differ; is #{@dir} on a filesystem every node shares?)", result&.duration)
@@ -225,10 +224,6 @@ module Relspec
           return skip(entry, not_started) if state == CANCELLED && @stopped
 
           fail(entry, failure_reason(id, entry, job, result), result&.duration)
-        end
-
-        def built(entry, result)
-          Scheduler::Outcome.new(entry: entry, status: :built, value: result.paths, duration: result.duration)
         end
 
         def failure_reason(id, entry, job, result)
@@ -310,13 +305,9 @@ module Relspec
           @notices&.puts("relspec: cancelled the Slurm jobs of run #{@run_id}: #{ids.join(', ')}")
         end
 
-        def result_path(source)
-          File.join(@jobs_dir, "#{source}.result")
-        end
+        def result_path(source) = File.join(@jobs_dir, "#{source}.result")
 
-        def log_path(source)
-          File.join(@dir, "logs", "#{source}.log")
-        end
+        def log_path(source) = File.join(@dir, "logs", "#{source}.log")
 
         # On the node, outside the shared filesystem.
         def work_dir(source)

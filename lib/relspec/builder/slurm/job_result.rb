@@ -23,7 +23,7 @@ module Relspec
             sha256, size, name = value.split(" ", 3)
             { "name" => name, "sha256" => sha256, "size" => Integer(size, 10) }
           end
-          values = fields.reject { |key, _| key == "file" }.to_h
+          values = fields.to_h.except("file")
           new(values["status"], Integer(values.fetch("exit", "1"), 10), Float(values.fetch("duration", "0")), files, dir)
         rescue ArgumentError
           nil
