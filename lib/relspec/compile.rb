@@ -101,12 +101,12 @@ module Relspec
 
     def source_package(work, decision)
       input = work.input
-      package = input.fetch(:package)
+      package = input.package
       Debian::SourcePackage.new(
         input: input, version: decision.version, digest: work.digest, checkout: checkout_of(package),
         overlay: work.overlay, orig_cache: File.join(@out, @effective.release, ".orig"),
-        substitutions: { "@RELSPEC_INSTALL_DIR@" => input[:install_dir], "@RELSPEC_RELEASE@" => @effective.release,
-                         "@RELSPEC_PACKAGE@" => input[:deb_name] }
+        substitutions: { "@RELSPEC_INSTALL_DIR@" => input.install_dir, "@RELSPEC_RELEASE@" => @effective.release,
+                         "@RELSPEC_PACKAGE@" => input.deb_name }
       )
     end
 
