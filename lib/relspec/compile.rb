@@ -47,11 +47,11 @@ module Relspec
     def run
       @planned = Plan.compute(@path, timeout: @timeout, discard_lock: @discard_lock)
       @on_planned&.call(@planned)
-      @effective = @planned.resolution.effective
+      @effective = @planned.effective
       require_maintainer
       require_workspace
       availability = @check ? Availability.guard(@planned, timeout: @timeout, **(@check.is_a?(Hash) ? @check : {})) : nil
-      @catalog = @planned.release_catalog.catalog
+      @catalog = @planned.catalog
       plan = @planned.plan
       jobs, published = jobs_of(plan)
       written, unchanged, repaired = emit(jobs)
@@ -68,17 +68,17 @@ module Relspec
       return if @effective["maintainer"]
 
       raise InvalidInput, [Diagnostic.error("missing-maintainer", "release #{@effective.release} names no maintainer",
-                                            location: @planned.resolution.spec_file.location(["release"]),
+                                            location: @planned.spec_location(["release"]),
                                             hint: "add `maintainer: Name <address>` (or inherit it from a parent)")]
     end
 
     def require_workspace
-      workspace = @planned.release_catalog.workspace
+      workspace = @planned.workspace
       return unless Catalog::SnapshotSource.snapshot?(workspace)
 
       raise InvalidInput, [Diagnostic.error("snapshot-workspace",
                                             "compile needs the package checkouts, but #{workspace} is a catalog snapshot",
-                                            location: @planned.resolution.spec_file.location(["workspace"]),
+                                            location: @planned.spec_location(["workspace"]),
                                             hint: "point `workspace:` at the autoproj workspace to compile")]
     end
 
@@ -93,7 +93,7 @@ module Relspec
           next unless decision.build?
 
           dir = File.join(@out, @effective.release, "#{target.codename}-#{target.arch}", decision.deb_name)
-          jobs << [dir, source_package(@planned.work.fetch(target).fetch(decision.package), decision)]
+          jobs << [dir, source_package(@planned.work_for(target, decision.package), decision)]
         end
       end
       [jobs.sort_by(&:first), published]
@@ -111,7 +111,7 @@ module Relspec
     end
 
     def checkout_of(package)
-      package.source_dir && File.join(@planned.release_catalog.workspace, package.source_dir)
+      package.source_dir && File.join(@planned.workspace, package.source_dir)
     end
 
     def emit(jobs)

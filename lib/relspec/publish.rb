@@ -106,11 +106,11 @@ module Relspec
     def self.write_osdeps(path, repository, timeout)
       planned = Plan.compute(path, timeout: timeout)
       presence = Osdeps::RepositoryPresence.new
-      files = Osdeps::Renderer.render(planned.plan, planned.resolution.effective.distributions, present: presence.to_proc)
+      files = Osdeps::Renderer.render(planned.plan, planned.effective.distributions, present: presence.to_proc)
       dir = File.join(repository, "osdeps")
       FileUtils.mkdir_p(dir)
       written = files.count do |arch, text|
-        AtomicFile.update(File.join(dir, Osdeps::Renderer.file_name(planned.resolution.effective.release, arch)), text)
+        AtomicFile.update(File.join(dir, Osdeps::Renderer.file_name(planned.effective.release, arch)), text)
       end
       [written, presence.missing]
     end

@@ -34,7 +34,7 @@ module Relspec
         require_relative "../plan"
         require_relative "../osdeps/renderer"
         result = Plan.compute(path, timeout: options[:timeout])
-        effective = result.resolution.effective
+        effective = result.effective
         present, missing = presence(result)
         files = Osdeps::Renderer.render(result.plan, effective.distributions, present: present)
         dir = File.join(File.dirname(result.lock_path), "osdeps")
