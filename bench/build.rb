@@ -9,7 +9,12 @@
 # Last, a build with nothing to do (everything recorded as built), against
 # `relspec show` of the same spec (starting relspec and reading the spec).
 #
-#   bundle exec ruby bench/build.rb [PACKAGES] [LAYERS]
+# With --engine slurm, the same release is built on a real one-node Slurm
+# cluster (spec/support/slurm_cluster.rb, 2 CPUs: two jobs at once) and its
+# ratio to its own lower bound is printed beside the local scheduler's, with
+# the per-job overhead of each: (wall × 2 − sum of durations) / packages.
+#
+#   bundle exec ruby bench/build.rb [PACKAGES] [LAYERS] [--engine slurm]
 require "fileutils"
 require "open3"
 require "rbconfig"
@@ -18,8 +23,10 @@ require "yaml"
 require_relative "timing"
 require_relative "../spec/support/build_release"
 
-COUNT = Integer(ARGV.fetch(0, "30"))
-LAYERS = Integer(ARGV.fetch(1, "5"))
+SLURM = ARGV.each_cons(2).include?(%w[--engine slurm])
+NUMBERS = ARGV.reject { |arg| arg.start_with?("--") || arg == "slurm" }
+COUNT = Integer(NUMBERS.fetch(0, "30"))
+LAYERS = Integer(NUMBERS.fetch(1, "5"))
 JOBS = 2
 
 def relspec(dir, *args)
@@ -43,6 +50,39 @@ def critical_path(plan, durations)
   finish.values.max
 end
 
+# [wall, sum of durations, lower bound] of a build just finished.
+def measured(release, plan, wall)
+  records = YAML.safe_load(File.read(File.join(release.target_dir, "build-results.yml"))).fetch("packages")
+  durations = records.transform_values { |record| record.fetch("duration") }
+  total = durations.values.sum
+  [wall, total, [critical_path(plan, durations), total / JOBS].max]
+end
+
+def slurm_comparison(dir, release, plan)
+  require "json"
+  require_relative "../spec/support/cli_runner"
+  require_relative "../spec/support/slurm_cluster"
+  cluster = SlurmCluster.start(cpus: JOBS)
+  begin
+    local = measured(release, plan, build(dir, "--jobs", JOBS.to_s, "--rebuild"))
+    wall = Timing.seconds do
+      run = cluster.relspec("build", "specs/bench.yml", "--out", "out", "--backend", "host", "--engine", "slurm",
+                            "--rebuild", "--quiet", "--slurm", "poll_interval=1", chdir: dir)
+      raise "relspec build --engine slurm failed:\n#{run.stdout}#{run.stderr}" unless run.status.success?
+    end
+    slurm = measured(release, plan, wall)
+  ensure
+    cluster.stop
+  end
+  puts format("%d packages, %d layers, host backend, 2 at once", COUNT, LAYERS)
+  puts "engine   wall      sum of durations  lower bound  ratio  overhead per job"
+  { "local" => local, "slurm" => slurm }.each do |name, (w, total, bound)|
+    puts format("%-6s %7.1f s %11.1f s %12.1f s %6.2f %9.2f s", name, w, total, bound, w / bound,
+                (w * JOBS - total) / COUNT)
+  end
+  puts "(target: slurm ratio <= 1.3)"
+end
+
 Dir.mktmpdir("relspec-bench-build") do |dir|
   release = BuildRelease.new(dir, "bench")
   per_layer = (COUNT.to_f / LAYERS).ceil
@@ -51,11 +91,12 @@ Dir.mktmpdir("relspec-bench-build") do |dir|
     layer = i / per_layer
     previous = layer.zero? ? [] : names[((layer - 1) * per_layer)...(layer * per_layer)]
     # One or two dependencies on the layer below, spread deterministically.
-    deps = previous.empty? ? [] : [previous[i % previous.size], previous[(i * 7 + 3) % previous.size]].uniq
+    deps = previous.empty? ? [] : [previous[i % previous.size], previous[((i * 7) + 3) % previous.size]].uniq
     release.package(name, dependencies: deps)
   end
   release.compile
   plan = YAML.safe_load(File.read(File.join(release.target_dir, "plan.yml")))
+  next slurm_comparison(dir, release, plan) if SLURM
 
   wall = build(dir, "--jobs", JOBS.to_s)
   records = YAML.safe_load(File.read(File.join(release.target_dir, "build-results.yml"))).fetch("packages")

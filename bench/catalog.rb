@@ -57,7 +57,7 @@ SIZES.each do |count|
     end)
     peer = median(Array.new(RUNS) { measure([RbConfig.ruby, File.join(ROOT, "bench", "autoproj_peer_load.rb"), workspace]) })
     puts format("%-9d %12.2f %12.2f %12.0f %12.0f %9.0f%%", count, ours[0], peer[0], ours[1], peer[1],
-                (ours[0] / peer[0] - 1) * 100)
+                ((ours[0] / peer[0]) - 1) * 100)
   end
 end
 puts "peak RSS of each whole process (GNU time)."

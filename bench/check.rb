@@ -40,7 +40,7 @@ end
 # package name => its relations (names repeat across packages, as osdeps do)
 def needs
   names = debian_names
-  Array.new(PACKAGES) { |i| ["pkg/#{i}", Array.new(PER_PACKAGE) { |j| names[(i * 7 + j * 31) % DISTINCT] }] }.to_h
+  Array.new(PACKAGES) { |i| ["pkg/#{i}", Array.new(PER_PACKAGE) { |j| names[((i * 7) + (j * 31)) % DISTINCT] }] }.to_h
 end
 
 def requirements

@@ -32,8 +32,15 @@ def snapshot(dir)
   end
 end
 
-KEEP = ENV["RELSPEC_BENCH_KEEP"]
-run_in = ->(&block) { KEEP ? (FileUtils.mkdir_p(KEEP); block.call(KEEP)) : Dir.mktmpdir("relspec-bench-compile", &block) }
+KEEP = ENV.fetch("RELSPEC_BENCH_KEEP", nil)
+run_in = lambda { |&block|
+  if KEEP
+    (FileUtils.mkdir_p(KEEP)
+     block.call(KEEP))
+  else
+    Dir.mktmpdir("relspec-bench-compile", &block)
+  end
+}
 run_in.call do |dir|
   builder = WorkspaceBuilder.new(File.join(dir, "ws"), package_set: "bench.pkgs")
   COUNT.times do |i|

@@ -55,8 +55,8 @@ def python_seconds(mode, path)
   Float(out)
 end
 
-def ruby_seconds(&block)
-  Timing.median(RUNS, &block)
+def ruby_seconds(&)
+  Timing.median(RUNS, &)
 end
 
 Dir.mktmpdir("relspec-bench-index") do |dir|
@@ -73,5 +73,5 @@ Dir.mktmpdir("relspec-bench-index") do |dir|
   puts format("%-40s %9.3fs %11.3fs %7.2fx", "planner fields (Package Version Depends …)", fields, peer_fields, fields / peer_fields)
   puts format("%-40s %9.3fs %11.3fs %7.2fx", "PackageIndex (fields + newest per name)", index, peer_fields, index / peer_fields)
   puts format("%-40s %9.3fs %11.3fs %7.2fx", "full read (every field of every stanza)", full, peer_full, full / peer_full)
-  puts "median of #{RUNS} runs each; targets: fields ≤ 1.0x, full ≤ 2.0x (C reader #{Relspec::Apt::NativeReader.available? ? "compiled" : "NOT compiled: pure Ruby"})"
+  puts "median of #{RUNS} runs each; targets: fields ≤ 1.0x, full ≤ 2.0x (C reader #{Relspec::Apt::NativeReader.available? ? 'compiled' : 'NOT compiled: pure Ruby'})"
 end

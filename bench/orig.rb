@@ -39,7 +39,6 @@ def make_tree(dir)
   [index, total]
 end
 
-
 Dir.mktmpdir("relspec-bench-orig") do |dir|
   tree = File.join(dir, "tree")
   FileUtils.mkdir_p(tree)

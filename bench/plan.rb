@@ -69,11 +69,11 @@ def setup(dir, count)
     write_repository(File.join(dir, "repos", release), release, catalog)
     parent = ANCESTORS[i + 1] ? "parent: #{ANCESTORS[i + 1]}\n" : ""
     File.write(File.join(specs, "#{release}.yml"), "release: #{release}\n#{parent}workspace: ../catalog.yml\n" \
-                                                    "targets: { bionic: [amd64, arm64], buster: [amd64, arm64] }\n" \
-                                                    "repository: { path: ../repos/#{release}, trusted: true }\n")
+                                                   "targets: { bionic: [amd64, arm64], buster: [amd64, arm64] }\n" \
+                                                   "repository: { path: ../repos/#{release}, trusted: true }\n")
   end
   File.write(File.join(specs, "gen-leaf.yml"), "release: gen-leaf\nparent: gen-a\nworkspace: ../catalog.yml\n" \
-                                                "blacklist: [{ match: pkg/p#{count / 2}, reason: bench }]\n")
+                                               "blacklist: [{ match: pkg/p#{count / 2}, reason: bench }]\n")
   File.join(specs, "gen-leaf.yml")
 end
 

@@ -39,9 +39,9 @@ def write_repository(dir)
   gz = Zlib.gzip(text)
   File.binwrite(File.join(index, "Packages.gz"), gz)
   File.write(File.join(dir, "repo", "dists", "bionic", "Release"),
-             "Codename: bionic\nArchitectures: amd64\nComponents: main\nSHA256:\n" \
-             " #{Digest::SHA256.hexdigest(text)} #{text.bytesize} main/binary-amd64/Packages\n" \
-             " #{Digest::SHA256.hexdigest(gz)} #{gz.bytesize} main/binary-amd64/Packages.gz\n")
+             "Codename: bionic\nArchitectures: amd64\nComponents: main\nSHA256:\n " \
+             "#{Digest::SHA256.hexdigest(text)} #{text.bytesize} main/binary-amd64/Packages\n " \
+             "#{Digest::SHA256.hexdigest(gz)} #{gz.bytesize} main/binary-amd64/Packages.gz\n")
   File.join(index, "Packages.gz")
 end
 
@@ -57,7 +57,6 @@ def apt_options(dir)
    "-o", "Dir::Etc::PreferencesParts=#{apt}/etc/preferences.d", "-o", "Debug::NoLocking=1",
    "-o", "APT::Architecture=amd64", "-o", "APT::Architectures::=amd64"]
 end
-
 
 Dir.mktmpdir("relspec-bench-select") do |dir|
   packages_gz = write_repository(dir)

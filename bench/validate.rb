@@ -39,10 +39,10 @@ def write_large_hierarchy(dir)
     repository: { path: /srv/big-root, trusted: true }
   YAML
   File.write(File.join(specs, "big-mid.yml"), "release: big-mid\nparent: big-root\n" \
-                                               "pins:\n#{(0...200).map { |i| "  pkg/p#{i}: { tag: v#{i} }\n" }.join}")
+                                              "pins:\n#{(0...200).map { |i| "  pkg/p#{i}: { tag: v#{i} }\n" }.join}")
   File.write(File.join(specs, "big-leaf.yml"), "release: big-leaf\nparent: big-mid\n" \
-                                                "pins:\n#{(0...400).map { |i| "  pkg/p#{i}: { commit: #{format('%07x', i + 0xabc0000)} }\n" }.join}" \
-                                                "blacklist:\n#{(0...100).map { |i| "  - { match: \"group#{i}/*\", reason: bench }\n" }.join}")
+                                               "pins:\n#{(0...400).map { |i| "  pkg/p#{i}: { commit: #{format('%07x', i + 0xabc0000)} }\n" }.join}" \
+                                               "blacklist:\n#{(0...100).map { |i| "  - { match: \"group#{i}/*\", reason: bench }\n" }.join}")
   specs
 end
 

@@ -11,7 +11,7 @@ RSpec.describe "README" do
   it "opens with the example command and the test command" do
     expect(readme.index("```sh")).to be < readme.index("## ")
     expect(commands.size).to eq(2)
-    expect(commands[1]).to eq("bin/setup && bundle exec rspec")
+    expect(commands[1]).to eq("bin/setup && bundle exec rubocop && bin/test")
   end
 
   it "has CI run exactly the test command" do

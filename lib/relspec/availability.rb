@@ -1,13 +1,15 @@
 # frozen_string_literal: true
 
 require_relative "error"
+require_relative "plan"
 require_relative "apt/cache"
 require_relative "availability/requirements"
 require_relative "availability/sources"
 require_relative "availability/check"
+require_relative "target"
 
 module Relspec
-  # OS dependency availability (DESIGN §8, §9; docs/check.md): does every
+  # OS dependency availability (docs/check.md): does every
   # Debian package the release's packages build- or run-depend on exist on
   # every target? Two entry points: `check` (relspec check) and `guard`, the
   # one commands that build run before doing anything (compile; build).
@@ -21,6 +23,16 @@ module Relspec
         super("OS dependencies are missing on the release's targets, nothing was written:\n" \
               "#{report.text.chomp}\n(see `relspec check`; --no-check skips this check)")
       end
+    end
+
+    # `relspec check`: plans the release at +path+ and checks the targets
+    # +target+ names ("codename/arch", nil: all); +launchpad_url+: the
+    # Launchpad API to ask.
+    def self.run(path, target:, mode:, launchpad_url:, timeout:, concurrency:)
+      planned = Plan.run(path, timeout: timeout)
+      only = Target.select(target, planned.plan.targets.keys, planned.plan.release)
+      check(planned, mode: mode, launchpad: LaunchpadClient.new(base: launchpad_url, timeout: timeout), only: only,
+                     timeout: timeout, concurrency: concurrency)
     end
 
     # The check of a planned release (+planned+: Plan::Result). +mode+:

@@ -3,23 +3,30 @@
 require "fileutils"
 require_relative "release_spec"
 require_relative "error"
+require_relative "target"
+require_relative "output_tree"
 require_relative "builder/build_plan"
-require_relative "builder/results"
+require_relative "builder/build_results"
 require_relative "builder/request"
+require_relative "builder/target_lock"
 require_relative "builder/repositories"
 require_relative "builder/scheduler"
 require_relative "builder/tool"
 require_relative "builder/host_backend"
 require_relative "builder/sbuild_backend"
+require_relative "builder/slurm/cluster"
+require_relative "builder/slurm/engine"
+require_relative "builder/slurm/settings"
 
 module Relspec
   # `relspec build`: builds the source packages `relspec compile` wrote,
   # per target in the order of its plan.yml, with one backend, and records
-  # every package's outcome in <target folder>/build-results.yml (Results).
+  # every package's outcome in <target folder>/build-results.yml (BuildResults).
   # Built files go to <target folder>/results/<source>/, logs to
   # <target folder>/logs/<source>.log. docs/build.md describes it.
   module Builder
     BACKENDS = %w[sbuild host].freeze
+    ENGINES = %w[local slurm].freeze
 
     # Per target: +reused+ counts packages an earlier run built (files checked).
     TargetReport = Struct.new(:target, :dir, :results, :outcomes, :reused, :prepared, keyword_init: true) do
@@ -30,16 +37,26 @@ module Relspec
 
     # +targets+: ["codename/arch"] to build (default: every target of the
     # spec); +listener+: receives start(target, total, done), building(entry),
-    # finished(outcome) for progress output.
+    # finished(outcome) for progress output. +engine+: "local" (the
+    # Scheduler, --jobs at once) or "slurm" (Slurm::Engine with
+    # +slurm_settings+); +notices+: where the Slurm engine says what it
+    # cancelled.
     def self.run(path, out:, backend: "sbuild", jobs: 1, targets: nil, keep_going: false, rebuild: false,
-                 prepare_only: false, listener: nil)
+                 prepare_only: false, listener: nil, engine: "local", slurm_settings: nil, notices: nil)
       Run.new(path, out: out, backend: backend, jobs: jobs, targets: targets, keep_going: keep_going,
-                    rebuild: rebuild, prepare_only: prepare_only, listener: listener).call
+                    rebuild: rebuild, prepare_only: prepare_only, listener: listener,
+                    engine: engine, slurm_settings: slurm_settings, notices: notices).call
     end
 
     # One `relspec build` run.
     class Run
-      def initialize(path, out:, backend:, jobs:, targets:, keep_going:, rebuild:, prepare_only:, listener:)
+      def initialize(path, out:, backend:, jobs:, targets:, keep_going:, rebuild:, prepare_only:, listener:,
+                     engine: "local", slurm_settings: nil, notices: nil)
+        raise InvalidOption, "unknown engine #{engine.inspect} (known: #{ENGINES.join(', ')})" unless ENGINES.include?(engine)
+
+        @engine = engine
+        @slurm_settings = slurm_settings || Slurm::Settings.new({})
+        @notices = notices
         @path = path
         @out = out
         @backend_name = backend
@@ -56,14 +73,19 @@ module Relspec
         resolution = ReleaseSpec.resolve(@path)
         @effective = resolution.effective
         backend = make_backend
-        selected_targets.map do |target|
-          dir = File.expand_path(File.join(@out, @effective.release, "#{target.codename}-#{target.arch}"))
+        tree = OutputTree.new(@out, @effective.release)
+        Target.select(@only, Target.all(@effective), @effective.release).map do |target|
+          dir = File.expand_path(tree.target_dir(target))
           plan = BuildPlan.read(dir)
-          FileUtils.mkdir_p(File.join(dir, "logs"))
-          prepared = backend.prepare(target, log: File.join(dir, "logs", "prepare.log"))
-          next TargetReport.new(target: target, dir: dir, outcomes: [], reused: 0, prepared: prepared) if @prepare_only
+          TargetLock.hold(dir, "build") do
+            logs = File.expand_path(tree.logs_dir(target))
+            FileUtils.mkdir_p(logs)
+            # on a cluster the chroot-prepare job of the target makes it, on a node
+            prepared = slurm? && !@prepare_only ? false : backend.prepare(target, log: File.join(logs, "prepare.log"))
+            next TargetReport.new(target: target, dir: dir, outcomes: [], reused: 0, prepared: prepared) if @prepare_only
 
-          build_target(target, dir, plan, backend, Repositories.of(resolution, target.codename), prepared)
+            build_target(target, dir, plan, backend, Repositories.of(resolution, target.codename), prepared)
+          end
         end
       rescue Interrupt
         @tool.stop_all
@@ -75,25 +97,25 @@ module Relspec
       def make_backend
         case @backend_name
         when "host" then HostBackend.new(@tool)
-        when "sbuild" then SbuildBackend.new(@tool, @effective.distributions)
+        when "sbuild" then SbuildBackend.new(@tool, @effective.distributions, chroot_cache: shared_chroots)
         else raise BuildError, "unknown backend #{@backend_name.inspect} (known: #{BACKENDS.join(', ')})"
         end
       end
 
-      def selected_targets
-        all = @effective.targets.flat_map { |codename, arches| Array(arches).map { |arch| Target.new(codename, arch) } }
-        return all if @only.nil? || @only.empty?
+      def slurm?
+        @engine == "slurm"
+      end
 
-        @only.uniq.map do |name|
-          all.find { |target| target.to_s == name } or
-            raise InvalidOption, "#{@effective.release} has no target #{name} (targets: #{all.join(', ')})"
-        end
+      # With Slurm, the chroot tarballs live in the shared folder when the
+      # settings name one (every node of an architecture uses the same).
+      def shared_chroots
+        folder = slurm? && @slurm_settings["shared_folder"]
+        folder ? File.join(File.expand_path(folder), "chroots") : nil
       end
 
       def build_target(target, dir, plan, backend, repositories, prepared)
-        results = Results.read(dir)
-        current = plan.entries.to_h { |entry| [entry.source, true] }
-        results.records.select! { |source, _| current[source] } # what compile no longer plans is not a result
+        results = BuildResults.load(dir, release: @effective.release, target: target)
+        results.keep_only(plan.entries.map(&:source))
         # A package built by another backend (a host build after sbuild ones)
         # is not what this run would build: built again.
         reuse = !@rebuild && results.backend == backend.name
@@ -101,20 +123,28 @@ module Relspec
         @listener&.start(target, plan.entries.size, done.size)
         local = Mutex.new
         debs = done.flat_map { |source| debs_of(dir, results[source]) }
-        outcomes = Scheduler.new(plan.entries, jobs: @jobs, keep_going: @keep_going, done: done).run(
-          on_start: ->(entry) { @listener&.building(entry) },
-          on_done: lambda do |outcome|
-            record(results, dir, outcome)
-            results.write(release: @effective.release, target: target.to_s, backend: backend.name)
-            @listener&.finished(outcome)
-          end
-        ) do |entry|
-          request = request_for(plan, entry, target, repositories, local.synchronize { debs.dup }, dir)
-          files = backend.build(request)
-          local.synchronize { debs.concat(files.grep(/\.u?deb\z/)) }
-          files
+        on_start = ->(entry) { @listener&.building(entry) }
+        on_done = lambda do |outcome|
+          record(results, dir, outcome)
+          results.write(backend: backend.name)
+          @listener&.finished(outcome)
         end
-        results.write(release: @effective.release, target: target.to_s, backend: backend.name) if outcomes.empty?
+        outcomes = if slurm?
+                     Slurm::Engine.new(cluster: Slurm::Cluster.new, settings: @slurm_settings, backend: backend,
+                                       notices: @notices)
+                                  .run(plan: plan, target: target, repositories: repositories, done: done,
+                                       done_debs: debs, keep_going: @keep_going, rebuild: @rebuild,
+                                       on_start: on_start, on_done: on_done)
+                   else
+                     Scheduler.new(plan.entries, jobs: @jobs, keep_going: @keep_going, done: done)
+                              .run(on_start: on_start, on_done: on_done) do |entry|
+                       request = request_for(plan, entry, target, repositories, local.synchronize { debs.dup }, dir)
+                       files = backend.build(request)
+                       local.synchronize { debs.concat(files.grep(/\.u?deb\z/)) }
+                       files
+                     end
+                   end
+        results.write(backend: backend.name) if outcomes.empty?
         TargetReport.new(target: target, dir: dir, results: results, outcomes: outcomes, reused: done.size,
                          prepared: prepared)
       end
@@ -131,18 +161,16 @@ module Relspec
       def record(results, dir, outcome)
         entry = outcome.entry
         started = outcome.status != :skipped
-        files = outcome.status == :built ? outcome.value.map { |file| Results.file_entry(dir, relative(dir, file)) } : nil
-        results.record(entry.source, Results::Record.new(
-                                       package: entry.package, version: entry.version, status: outcome.status.to_s,
-                                       duration: started ? outcome.duration : nil,
-                                       log: started ? "logs/#{entry.source}.log" : nil,
-                                       reason: outcome.reason&.gsub("#{dir}/", ""),
-                                       files: files
-                                     ))
+        files = outcome.status == :built ? outcome.value.map { |file| BuildResults::Produced.of(dir, relative(dir, file)) } : []
+        results.record(BuildResults::Record.new(
+                         source: entry.source, package: entry.package, version: entry.version, status: outcome.status.to_s,
+                         duration: started ? outcome.duration : nil, log: started ? "logs/#{entry.source}.log" : nil,
+                         reason: outcome.reason&.gsub("#{dir}/", ""), files: files.freeze
+                       ))
       end
 
       def debs_of(dir, record)
-        record.files.map { |file| File.join(dir, file["name"]) }.grep(/\.u?deb\z/)
+        record.files.map { |file| File.join(dir, file.name) }.grep(/\.u?deb\z/)
       end
 
       def relative(dir, file)

@@ -3,7 +3,7 @@
 require_relative "catalog/package"
 
 module Relspec
-  # The package database of a release's workspace (DESIGN §3): every package
+  # The package database of a release's workspace (docs/catalog.md): every package
   # with its source, dependencies and per-distribution OS dependencies, the
   # metapackages and the layout (the default selection). Built by
   # Catalog::AutoprojSource from a workspace or Catalog::SnapshotSource from

@@ -3,9 +3,13 @@
 require_relative "plan"
 require_relative "availability"
 require_relative "debian/source_package"
+require_relative "debian/emitter"
 require_relative "debian/naming"
-require_relative "osdeps/renderer"
+require_relative "osdeps/files"
+require_relative "output_tree"
+require_relative "project"
 require_relative "yaml/writer"
+require_relative "builder/build_plan"
 require_relative "atomic_file"
 require_relative "temporaries"
 
@@ -48,24 +52,28 @@ module Relspec
       @planned = Plan.compute(@path, timeout: @timeout, discard_lock: @discard_lock)
       @on_planned&.call(@planned)
       @effective = @planned.effective
+      @tree = OutputTree.new(@out, @effective.release)
       require_maintainer
       require_workspace
-      availability = @check ? Availability.guard(@planned, timeout: @timeout, **(@check.is_a?(Hash) ? @check : {})) : nil
+      availability = if @check
+                       Availability.guard(@planned, timeout: @timeout, **(@check.is_a?(Hash) ? @check : {}))
+                     end
       @catalog = @planned.catalog
       plan = @planned.plan
       jobs, published = jobs_of(plan)
-      written, unchanged, repaired = emit(jobs)
+      sweep_temporaries
+      emitted = Debian::Emitter.new(jobs: @jobs, progress: @progress).call(jobs)
       write_build_plans(plan)
       lock_changed = @planned.write_lock
-      Result.new(release: @effective.release, written: written, unchanged: unchanged, published: published,
+      Result.new(release: @effective.release, written: emitted.written, unchanged: emitted.unchanged, published: published,
                  lock_path: @planned.lock_path, lock_changed: lock_changed, osdeps_written: write_osdeps(plan),
-                 unchecked: availability ? availability.unchecked : [], repaired: repaired)
+                 unchecked: availability ? availability.unchecked : [], repaired: emitted.repaired)
     end
 
     private
 
     def require_maintainer
-      return if @effective["maintainer"]
+      return if @effective.maintainer
 
       raise InvalidInput, [Diagnostic.error("missing-maintainer", "release #{@effective.release} names no maintainer",
                                             location: @planned.spec_location(["release"]),
@@ -92,7 +100,7 @@ module Relspec
           published << [target, decision.package] if decision.published?
           next unless decision.build?
 
-          dir = File.join(@out, @effective.release, "#{target.codename}-#{target.arch}", decision.deb_name)
+          dir = @tree.source_dir(target, decision.deb_name)
           jobs << [dir, source_package(@planned.work_for(target, decision.package), decision)]
         end
       end
@@ -104,7 +112,7 @@ module Relspec
       package = input.package
       Debian::SourcePackage.new(
         input: input, version: decision.version, digest: work.digest, checkout: checkout_of(package),
-        overlay: work.overlay, orig_cache: File.join(@out, @effective.release, ".orig"),
+        overlay: work.overlay, orig_cache: @tree.orig_cache,
         substitutions: { "@RELSPEC_INSTALL_DIR@" => input.install_dir, "@RELSPEC_RELEASE@" => @effective.release,
                          "@RELSPEC_PACKAGE@" => input.deb_name }
       )
@@ -114,56 +122,13 @@ module Relspec
       package.source_dir && File.join(@planned.workspace, package.source_dir)
     end
 
-    def emit(jobs)
-      sweep_temporaries
-      queue = Queue.new
-      jobs.each { |job| queue << job }
-      written = []
-      unchanged = []
-      errors = []
-      repaired = []
-      lock = Mutex.new
-      failures = []
-      Array.new([@jobs, jobs.size].min) do
-        Thread.new do
-          Thread.current.report_on_exception = false
-          while (job = next_job(queue))
-            dir, package = job
-            begin
-              changed = package.emit(dir)
-              lock.synchronize do
-                (changed ? written : unchanged) << dir
-                repaired.concat(package.repaired)
-                @progress&.call(written.size + unchanged.size, jobs.size)
-              end
-            rescue InvalidInput => e
-              lock.synchronize { errors.concat(e.diagnostics) }
-            rescue StandardError => e # re-raised below, in the main thread, where errors become messages
-              lock.synchronize { failures << e }
-            end
-          end
-        end
-      end.each(&:join)
-      raise failures.first unless failures.empty?
-      raise InvalidInput, errors unless errors.empty?
-
-      [written.sort, unchanged.sort, repaired.uniq.sort]
-    end
-
     # Leftovers of compiles that were killed: removed before this one
     # writes, so that the tree ends as a clean compile's would.
     def sweep_temporaries
-      release = File.join(@out, @effective.release)
-      orig = File.join(release, ".orig")
-      [*Dir.glob(File.join(release, "*/")), *Dir.glob(File.join(orig, "*/")), orig].each do |dir|
+      orig = @tree.orig_cache
+      [*Dir.glob(File.join(@tree.release_dir, "*/")), *Dir.glob(File.join(orig, "*/")), orig].each do |dir|
         Temporaries.sweep(dir)
       end
-    end
-
-    def next_job(queue)
-      queue.pop(true)
-    rescue ThreadError
-      nil
     end
 
     # <out>/<release>/<codename>-<arch>/plan.yml: the builds in dependency
@@ -174,24 +139,18 @@ module Relspec
         built = builds.to_h { |decision| [decision.package, decision] }
         entries = builds.map do |decision|
           needs = @catalog.package(decision.package).build_dependencies.filter_map { |dep| built[dep]&.deb_name }
-          { "package" => decision.package, "source" => decision.deb_name, "version" => decision.version.to_s,
-            "dsc" => "#{decision.deb_name}/#{Debian::Naming.dsc(decision.deb_name, decision.version)}",
-            "build_depends" => needs }
+          Builder::BuildPlan::Entry.new(package: decision.package, source: decision.deb_name,
+                                        version: decision.version.to_s, build_depends: needs,
+                                        dsc: "#{decision.deb_name}/#{Debian::Naming.dsc(decision.deb_name, decision.version)}")
         end
-        dir = File.join(@out, @effective.release, "#{target.codename}-#{target.arch}")
-        FileUtils.mkdir_p(dir)
-        AtomicFile.update(File.join(dir, "plan.yml"),
-                         Yaml::Writer.dump("release" => plan.release, "target" => target.to_s, "builds" => entries))
+        FileUtils.mkdir_p(@tree.target_dir(target))
+        Builder::BuildPlan.write(@tree.target_dir(target), release: plan.release, target: target, entries: entries)
       end
     end
 
     def write_osdeps(plan)
-      files = Osdeps::Renderer.render(plan, @effective.distributions)
-      dir = File.join(File.dirname(@planned.lock_path), "osdeps")
-      FileUtils.mkdir_p(dir)
-      files.count do |arch, text|
-        AtomicFile.update(File.join(dir, Osdeps::Renderer.file_name(@effective.release, arch)), text)
-      end
+      dir = Project.new(@planned.project_root).osdeps_dir(@effective.release)
+      Osdeps::Files.write_release(plan, @effective, dir).changed_count
     end
   end
 end

@@ -16,7 +16,7 @@ module Relspec
 
     def initialize(diagnostics)
       @diagnostics = diagnostics.sort_by(&:sort_key).freeze
-      super(@diagnostics.map(&:to_s).join("\n"))
+      super(@diagnostics.join("\n"))
     end
   end
 

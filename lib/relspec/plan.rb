@@ -3,7 +3,7 @@
 require_relative "release_spec"
 require_relative "catalog/release_catalog"
 require_relative "catalog/cache"
-require_relative "display_path"
+require_relative "project"
 require_relative "plan/target"
 require_relative "plan/ancestor"
 require_relative "plan/inventory"
@@ -18,7 +18,7 @@ require_relative "plan/facts"
 require_relative "plan/result"
 
 module Relspec
-  # The release plan (DESIGN §3, §4): for every target and package, inherit,
+  # The release plan (docs/plan.md): for every target and package, inherit,
   # build or published, with causes; recorded in releases/<r>/lock.yml.
   module Plan
     # Plans the release of the spec at +path+: Plan.decide over Plan.read.
@@ -46,7 +46,7 @@ module Relspec
       targets = Target.all(effective)
       gem_distribution = nil
       gem_archives = lambda do
-        gem_distribution ||= read_distribution(resolution, /\Aruby-/, targets, fetcher_options, cache)
+        gem_distribution ||= read_distribution(resolution, Debian::Naming::DISTRIBUTION_GEMS, targets, fetcher_options, cache)
         targets.to_h { |target| [target.to_s, gem_distribution.index(target)] }
       end
       release_catalog = Catalog::ReleaseCatalog.load(resolution, cache: catalog_cache, gem_fetch: gem_fetch, timeout: timeout,
@@ -59,7 +59,7 @@ module Relspec
                                                            cache)
       root = project_root(path)
       Facts.new(resolution: resolution, release_catalog: release_catalog, ancestors: ancestors, inventory: inventory,
-                distribution: distribution, own: own, previous: previous, lock_path: lock_path,
+                distribution: distribution, own: own, previous: previous, lock_path: lock_path, project_root: root,
                 overlays: ->(name, arch) { Debian::Overlay.for(root, name, arch: arch) })
     end
 
@@ -74,13 +74,19 @@ module Relspec
       history = facts.previous&.history || History.empty
       Result.new(resolution: resolution, release_catalog: facts.release_catalog, plan: plan,
                  lock: Lock.from_plan(plan, Lock.spec_digest(effective), history), lock_path: facts.lock_path, work: work,
-                 lock_read: !facts.previous.nil?)
+                 lock_read: !facts.previous.nil?, project_root: facts.project_root)
+    end
+
+    # The use case's entry, shaped as Compile.run, Builder.run, Publish.run,
+    # Availability.run and Diff.run: what the CLI calls.
+    def self.run(path, **options)
+      compute(path, **options)
     end
 
     # The folder above the spec's folder (where releases/ and overlays/ are),
     # as the user would write it.
     def self.project_root(path)
-      DisplayPath.of(File.dirname(File.dirname(File.expand_path(path))))
+      Project.of_spec(path).root
     end
 
     # The lock, strictly read: one that cannot be read stops the run unless
@@ -124,18 +130,15 @@ module Relspec
       origin = effective.origin("distributions")
       location = origin&.location || resolution.spec_file.location(["release"])
       DistributionPackages.read(effective.distributions, targets, wanted, spec_dir: File.dirname(resolution.spec_file.path),
-                                                                           location: location, fetcher_options: fetcher_options, cache: cache)
+                                                                          location: location, fetcher_options: fetcher_options, cache: cache)
     end
 
     def self.read_own(resolution, targets, fetcher_options, cache)
-      entry = resolution.effective["repository"]
+      entry = resolution.effective.repository
       return OwnRepository.read(nil, targets) unless entry
 
       spec_file = resolution.spec_file
-      # The release publishes into its path: a path that does not exist yet
-      # is an empty repository, never a reason to ask the URL.
-      entry = entry.except("url") if entry["path"]
-      repository = Ancestors.reader(entry, File.dirname(spec_file.path), fetcher_options, cache)
+      repository = Ancestors.reader(entry, entry.own_location, fetcher_options, cache)
       OwnRepository.read(repository, targets)
     rescue Apt::Repository::Error => e
       raise InvalidInput, [Diagnostic.error("own-repository", "the repository of #{resolution.effective.release}: #{e.message}",

@@ -5,9 +5,10 @@ require_relative "release_spec"
 require_relative "plan"
 require_relative "atomic_file"
 require_relative "diagnostic"
-require_relative "osdeps/renderer"
-require_relative "osdeps/repository_presence"
-require_relative "publish/build_results"
+require_relative "osdeps/files"
+require_relative "output_tree"
+require_relative "builder/build_results"
+require_relative "builder/target_lock"
 require_relative "publish/repository_config"
 require_relative "publish/repository_lock"
 require_relative "publish/upload"
@@ -34,14 +35,38 @@ module Relspec
       resolution = ReleaseSpec.resolve(path)
       effective = resolution.effective
       repository = repository_path(resolution)
-      all = Plan::Target.all(effective)
-      selected = Plan::Target.select(target, all, effective.release)
-      results = selected.to_h { |one| [one, read_results(out, effective.release, one, explicit: !target.nil?)] }
-      raise PublishError, "nothing to publish: no target of #{effective.release} has a build-results.yml under " \
-                          "#{File.join(out, effective.release)} (run relspec build first)" if results.values.none?
+      tree = OutputTree.new(out, effective.release)
+      all = Target.all(effective)
+      selected = Target.select(target, all, effective.release)
+      # No build of these targets runs while their results are read and included.
+      holding(built_folders(tree, selected)) do
+        include_and_render(path, tree, effective, repository, all, selected, timeout: timeout, waiting: waiting,
+                                                                             explicit: !target.nil?)
+      end
+    end
+
+    # The folders of +targets+ that a build wrote into.
+    def self.built_folders(tree, targets)
+      targets.map { |one| tree.target_dir(one) }.select { |dir| File.directory?(dir) }
+    end
+
+    # Holds the target lock of each of +folders+, then yields.
+    def self.holding(folders, &block)
+      return yield if folders.empty?
+
+      Builder::TargetLock.hold(folders.first, "publish") { holding(folders.drop(1), &block) }
+    end
+
+    # +explicit+: the user named the target (unbuilt is then an error).
+    def self.include_and_render(path, tree, effective, repository, all, selected, timeout:, waiting:, explicit:)
+      results = selected.to_h { |one| [one, read_results(tree, one, explicit: explicit)] }
+      if results.values.none?
+        raise PublishError, "nothing to publish: no target of #{effective.release} has a build-results.yml under " \
+                            "#{tree.release_dir} (run relspec build first)"
+      end
 
       uploads = results.to_h { |one, read| [one, read ? read.built.map { |entry| Upload.of(entry, File.dirname(read.path), read.path) } : []] }
-      sign_with = effective["repository"]["sign_with"]
+      sign_with = effective.repository.sign_with
       SigningKey.check(sign_with) if sign_with
       config = RepositoryConfig.new(release: effective.release, targets: all, sign_with: sign_with)
       RepositoryLock.hold(repository, waiting: waiting) do
@@ -53,8 +78,8 @@ module Relspec
     end
 
     def self.repository_path(resolution)
-      entry = resolution.effective["repository"]
-      return File.expand_path(entry["path"], File.dirname(resolution.spec_file.path)) if entry.is_a?(Hash) && entry["path"]
+      entry = resolution.effective.repository
+      return entry.path if entry&.path
 
       location = entry ? resolution.spec_file.key_location(["repository"]) : resolution.spec_file.location(["release"])
       raise InvalidInput, [Diagnostic.error("publish-repository",
@@ -64,9 +89,10 @@ module Relspec
 
     # The target's results, nil when it has none (an error when the user
     # asked for that target).
-    def self.read_results(out, release, target, explicit:)
-      path = BuildResults.path(out, release, target)
-      return BuildResults.read(path, release: release, target: target) if File.exist?(path)
+    def self.read_results(tree, target, explicit:)
+      path = tree.results_file(target)
+      release = tree.release
+      return Builder::BuildResults.read(path, release: release, target: target) if File.exist?(path)
       raise PublishError, "#{target} of #{release} has not been built: #{path} does not exist (run relspec build)" if explicit
 
       nil
@@ -105,14 +131,9 @@ module Relspec
     # ancestors do) is listed.
     def self.write_osdeps(path, repository, timeout)
       planned = Plan.compute(path, timeout: timeout)
-      presence = Osdeps::RepositoryPresence.new
-      files = Osdeps::Renderer.render(planned.plan, planned.effective.distributions, present: presence.to_proc)
-      dir = File.join(repository, "osdeps")
-      FileUtils.mkdir_p(dir)
-      written = files.count do |arch, text|
-        AtomicFile.update(File.join(dir, Osdeps::Renderer.file_name(planned.effective.release, arch)), text)
-      end
-      [written, presence.missing]
+      written = Osdeps::Files.write_release(planned.plan, planned.effective, File.join(repository, "osdeps"),
+                                            held_only: true)
+      [written.changed_count, written.missing]
     end
     private_class_method :repository_path, :read_results, :include_targets, :write_config, :write_osdeps
   end

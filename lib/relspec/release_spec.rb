@@ -5,7 +5,7 @@ require_relative "release_spec/resolution"
 require_relative "error"
 
 module Relspec
-  # Release specs: reading, checking and inheriting them (DESIGN §4).
+  # Release specs: reading, checking and inheriting them (docs/spec-reference.md).
   module ReleaseSpec
     # The effective spec of the release in +path+, whose parents are looked
     # up beside it; raises InvalidInput with every error found.

@@ -80,7 +80,7 @@ module Relspec
     def start_time(pid)
       stat = File.read(File.join(PROC, pid.to_s, "stat"))
       close = stat.rindex(")")
-      close && stat[(close + 2)..].split(" ")[19]&.to_i
+      close && stat[(close + 2)..].split[19]&.to_i
     rescue SystemCallError
       nil
     end

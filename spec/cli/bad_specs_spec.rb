@@ -53,7 +53,7 @@ RSpec.describe "relspec validate on the bad-spec corpus" do
     files = cases.map { |file| "spec/fixtures/specs/bad/#{File.basename(file, '.err')}.yml" }
     run = relspec("validate", *files)
     expect(run.exit_code).to eq(1)
-    expected = cases.flat_map { |file| File.read(file).lines.reject { |l| l.match?(/^\d+ errors?/) } }.uniq
+    expected = cases.flat_map { |file| File.read(file).lines.grep_v(/^\d+ errors?/) }.uniq
     expected.each { |line| expect(run.stderr).to include(line) }
   end
 end

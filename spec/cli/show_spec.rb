@@ -25,7 +25,7 @@ RSpec.describe "relspec show" do
     expect(run.exit_code).to eq(0), run.stderr
     lines = run.stdout.lines.map(&:rstrip)
     expect(lines.grep(/^targets:/).first).to match(%r{# specs/demo-base\.yml:6:1$})
-    expect(lines.grep(/^  base\/types:/).first).to match(%r{# specs/demo-child\.yml:11:3$})
+    expect(lines.grep(%r{^  base/types:}).first).to match(%r{# specs/demo-child\.yml:11:3$})
     expect(lines.grep(/^release:/).first).to match(%r{# specs/demo-child\.yml:3:1$})
     expect(YAML.safe_load(run.stdout)).to eq(YAML.safe_load(relspec("show", "specs/demo-child.yml").stdout))
   end

@@ -2,6 +2,7 @@
 
 require "spec_helper"
 require "digest"
+require "relspec/debian/orig_cache"
 
 # Interrupts at any moment (issue 12, case 4): SIGINT is always "interrupted"
 # and exit 130 (never a NameError from a half-loaded class), and the
@@ -49,6 +50,28 @@ RSpec.describe "relspec under interrupts" do
 
       expect([status.exitstatus, message]).to eq([130, "relspec: interrupted\n"]), "after #{delay} s: #{message}"
     end
+  end
+
+  # Issue 24, item 4: the orig cache (<out>/<release>/.orig/) holds each
+  # tarball with its SHA256; a compile killed while writing one leaves a
+  # temporary, never a half-written entry, and the next compile ends with
+  # every entry intact.
+  it "keeps the orig cache intact when a compile is killed while writing it" do
+    cache = File.join(@dir, "orig-killed", "h", ".orig")
+    pid, = spawn_compile("orig-killed")
+    deadline = Process.clock_gettime(Process::CLOCK_MONOTONIC) + 120
+    until Dir.glob(File.join(cache, "*", ".*.relspec-#{pid}-*")).any? # .orig/<key>/
+      raise "no orig cache temporary appeared" if Process.clock_gettime(Process::CLOCK_MONOTONIC) > deadline
+    end
+    Process.kill("KILL", pid)
+    Process.wait(pid)
+
+    run = relspec("compile", @spec, "--out", "orig-killed", "--no-check", chdir: @dir)
+    expect(run.exit_code).to eq(0), run.stderr
+    entries = Dir.glob(File.join(cache, "*", "*.orig.tar.gz"))
+    expect(entries).not_to be_empty
+    entries.each { |entry| expect(Relspec::Debian::OrigCache.state(entry)).to eq(:intact), entry }
+    expect(Dir.glob("**/.*relspec-*", File::FNM_DOTMATCH, base: cache)).to eq([])
   end
 
   it "removes the temporaries of a killed compile, only those, and ends with a clean compile's tree" do

@@ -60,7 +60,7 @@ class AptRepositoryBuilder
     FileUtils.mkdir_p(File.join(root, "DEBIAN"))
     FileUtils.mkdir_p(File.join(root, "usr", "share", "doc", name))
     File.write(File.join(root, "usr", "share", "doc", name, "README"), "#{name} #{version}\n")
-    control = +"Package: #{name}\nVersion: #{version}\nArchitecture: #{arch}\n"
+    control = "Package: #{name}\nVersion: #{version}\nArchitecture: #{arch}\n"
     control << "Maintainer: Test <test@example.org>\nSection: misc\nPriority: optional\n"
     control << "Source: #{source}\n" if source
     control << "Depends: #{depends}\n" if depends

@@ -49,12 +49,13 @@ class BuildRelease
     File.join(dir, "specs", "#{name}.yml")
   end
 
-  def compile
+  # +spec+: more of the spec (YAML lines), e.g. its repository.
+  def compile(spec: "")
     @builder.layout(*@names)
     @builder.create
     FileUtils.mkdir_p(File.dirname(spec_path))
     File.write(spec_path, "release: #{name}\nworkspace: ../ws/workspace\ntargets: { bookworm: [amd64] }\n" \
-                          "maintainer: Demo <demo@example.org>\n")
+                          "maintainer: Demo <demo@example.org>\n#{spec}")
     output, status = Open3.capture2e(RbConfig.ruby, EXE, "compile", "specs/#{name}.yml", "--out", "out", chdir: dir)
     raise "relspec compile failed: #{output}" unless status.success?
 

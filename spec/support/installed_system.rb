@@ -15,7 +15,8 @@ require "open3"
 # namespace with /proc and /dev of their own, so nothing is mounted on the
 # host after a command ends and the folder can simply be removed.
 class InstalledSystem
-  Failed = Class.new(StandardError)
+  class Failed < StandardError
+  end
 
   PATH = "/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin"
 
@@ -49,7 +50,7 @@ class InstalledSystem
   # (clean environment, HOME=/root), with +args+ as $1…; [output, status].
   def run(script, *args, env: {})
     environment = { "PATH" => PATH, "HOME" => "/root", "LANG" => "C.UTF-8" }.merge(env)
-                                                                                .map { |name, value| "#{name}=#{value}" }
+                                                                            .map { |name, value| "#{name}=#{value}" }
     Open3.capture2e({}, "unshare", "--mount", "--propagation", "private", "--fork", "--pid", "sh", "-c",
                     'mount -t proc proc "$0/proc" && mount --rbind /dev "$0/dev" && exec chroot "$@"', @root,
                     @root, "env", "-i", *environment, "bash", "-c", script, "bash", *args, unsetenv_others: true)

@@ -109,7 +109,7 @@ class LaunchpadServer
     StreamedBody.attach(response, piece, pause, limit: 30)
   end
 
-  def collection(request, query, response)
+  def collection(_request, query, response)
     series_link = query["distro_arch_series"].to_s
     series = series_link.delete_prefix("#{base}/ubuntu/")
     unless query["ws.op"] == "getPublishedBinaries" && @published.key?(series)

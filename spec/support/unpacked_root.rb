@@ -22,7 +22,8 @@ class UnpackedRoot
                       BUNDLER_ORIG_BUNDLER_SETUP BUNDLER_ORIG_BUNDLER_VERSION BUNDLER_ORIG_MANPATH]
                    .to_h { |name| [name, nil] }.freeze
 
-  Failed = Class.new(StandardError)
+  class Failed < StandardError
+  end
 
   attr_reader :root
 

@@ -129,11 +129,11 @@ class WorkspaceBuilder
   def write_package_set
     dir = File.join(root, "package_sets", package_set_name)
     write(File.join(dir, "source.yml"), YAML.dump(
-      "name" => package_set_name,
-      "version_control" => [{ ".*" => { "type" => "git", "url" => "$AUTOPROJ_ROOT/repositories/$PACKAGE.git",
-                                        "branch" => "master" } }] +
-        @packages.values.select(&:tag).map { |package| { package.name => { "tag" => package.tag } } }
-    ))
+                                          "name" => package_set_name,
+                                          "version_control" => [{ ".*" => { "type" => "git", "url" => "$AUTOPROJ_ROOT/repositories/$PACKAGE.git",
+                                                                            "branch" => "master" } }] +
+                                            @packages.values.select(&:tag).map { |package| { package.name => { "tag" => package.tag } } }
+                                        ))
     write(File.join(dir, "packages.autobuild"), autobuild_definitions)
     write(File.join(dir, "#{package_set_name}.osdeps"), @osdeps)
   end

@@ -18,7 +18,6 @@ module Relspec
         end
       end
 
-
       module_function
 
       # Every stanza as a Hash of its fields in file order (names as written,
@@ -66,7 +65,7 @@ module Relspec
             last = nil
           elsif first == 35 # "#"
             next
-          elsif first == 32 || first == 9
+          elsif [32, 9].include?(first)
             raise ParseError.new("continuation line outside of a field", index + 1) unless last
 
             fields[last] = "#{fields[last]}\n#{line}"
@@ -84,7 +83,7 @@ module Relspec
             name = line[0, colon]
             raise ParseError.new("field #{name} appears twice in one stanza", index + 1) if fields.key?(name)
 
-            fields[name] = line[colon + 1..].strip
+            fields[name] = line[(colon + 1)..].strip
             last = name
           end
         end

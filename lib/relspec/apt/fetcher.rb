@@ -2,15 +2,17 @@
 
 require "net/http"
 require "openssl"
-require "timeout"
 require "uri"
 require_relative "../http/capped_body"
+require_relative "../http/client"
+require_relative "../http/retry"
 
 module Relspec
   module Apt
     # Reads files of a repository from a local folder or over http(s), with
     # timeouts and a bounded number of retries for what may pass (timeouts,
-    # refused connections, 5xx answers). A missing file is nil, not an error.
+    # refused connections, 5xx answers, honouring Retry-After up to the
+    # deadline). A missing file is nil, not an error.
     class Fetcher
       # Raised when a file cannot be read; the message names its URL.
       class Failure < StandardError; end
@@ -32,7 +34,9 @@ module Relspec
       def initialize(base, timeout: 10, retries: RETRIES)
         @base = base.to_s.chomp("/")
         @timeout = timeout
-        @retries = retries
+        @client = Http::Client.new(timeout: timeout)
+        @retry = Http::Retry.new(attempts: retries, deadline: deadline, backoff: ->(attempt) { BACKOFF * attempt },
+                                 max_retry_after: deadline)
       end
 
       def remote?
@@ -73,39 +77,21 @@ module Relspec
         raise Failure, "cannot read #{path}: #{e.message}"
       end
 
-      # Raised when a download passed its overall deadline.
-      class DeadlineExceeded < StandardError; end
-
       def fetch_http(url, max_bytes)
-        started = now
-        attempt = 0
-        begin
-          attempt += 1
-          remaining = deadline - (now - started)
-          raise DeadlineExceeded if remaining <= 0
-
-          Timeout.timeout(remaining, DeadlineExceeded) { get(URI(url), max_bytes) }
-        rescue OpenSSL::SSL::SSLError, Net::HTTPBadResponse, Net::ProtocolError => e
-          raise Failure, "#{url}: #{e.message}"
-        rescue DeadlineExceeded
-          raise Failure, "#{url}: not complete after #{elapsed(started)} s, the deadline of a download " \
-                         "(#{DEADLINE_FACTOR} × --timeout #{@timeout}; after #{attempts(attempt)})"
-        rescue Net::OpenTimeout, Net::ReadTimeout, SystemCallError, SocketError, IOError, RetryableAnswer => e
-          if attempt >= @retries
-            raise Failure, "#{url}: #{describe(e)} (after #{attempts(attempt)}, #{elapsed(started)} s in all)"
-          end
-
-          sleep(BACKOFF * attempt)
-          retry
-        end
+        @retry.run { get(URI(url), max_bytes) }
+      rescue OpenSSL::SSL::SSLError, Net::HTTPBadResponse, Net::ProtocolError => e
+        raise Failure, "#{url}: #{e.message}"
+      rescue Http::Retry::DeadlineExceeded => e
+        raise Failure, "#{url}: not complete after #{elapsed(e)} s, the deadline of a download " \
+                       "(#{DEADLINE_FACTOR} × --timeout #{@timeout}; after #{attempts(e.attempts)})"
+      rescue Http::Retry::GaveUp => e
+        raise Failure, "#{url}: #{describe(e.last)} (after #{attempts(e.attempts)}, #{elapsed(e)} s in all)"
+      rescue Http::Retry::WaitTooLong => e
+        raise Failure, "#{url}: asked to wait #{e.seconds} s, more than the deadline of a download (#{deadline} s)"
       end
 
-      def now
-        Process.clock_gettime(Process::CLOCK_MONOTONIC)
-      end
-
-      def elapsed(started)
-        format("%.1f", now - started)
+      def elapsed(error)
+        format("%.1f", error.elapsed)
       end
 
       def attempts(count)
@@ -116,30 +102,17 @@ module Relspec
         max_bytes == MAX_BYTES ? "the most relspec downloads (Fetcher::MAX_BYTES)" : "the most this file can hold"
       end
 
-      # A 5xx answer: the server may recover.
-      class RetryableAnswer < StandardError; end
-
       # Follows a few redirects (gem servers often send downloads to storage
       # elsewhere), to http(s) only.
       def get(uri, max_bytes, redirects = REDIRECTS)
-        Net::HTTP.start(uri.host, uri.port, use_ssl: uri.scheme == "https", open_timeout: @timeout,
-                                            read_timeout: @timeout, ssl_timeout: @timeout) do |http|
-          # Net::HTTP would repeat a timed-out GET once on its own: attempts
-          # are counted here, so that the message says how many were made.
-          http.max_retries = 0
-          # `return` leaves before Net::HTTP reads what is left of the body
-          # (it would read an endless 404 body to the end).
-          http.request(Net::HTTP::Get.new(uri)) do |response|
-            return answer(uri, response, max_bytes, redirects)
-          end
-        end
+        @client.get(uri) { |response| answer(uri, response, max_bytes, redirects) }
       end
 
       def answer(uri, response, max_bytes, redirects)
         case response
         when Net::HTTPSuccess then read_body(uri, response, max_bytes)
         when Net::HTTPNotFound, Net::HTTPGone then nil
-        when Net::HTTPServerError then raise RetryableAnswer, "HTTP #{response.code} #{response.message}"
+        when Net::HTTPServerError then raise Http::Retryable.answer(response)
         when Net::HTTPRedirection then follow(uri, response, max_bytes, redirects)
         else raise Failure, "#{uri}: HTTP #{response.code} #{response.message}"
         end

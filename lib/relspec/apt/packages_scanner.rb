@@ -16,17 +16,17 @@ module Relspec
       end
 
       # Yields one Hash per stanza holding the wanted fields that it has.
-      def each(fields, &block)
+      def each(fields, &)
         return enum_for(:each, fields) unless block_given?
-        return Native.scan(@text, fields).first.each(&block) if NativeReader.available?
+        return Native.scan(@text, fields).first.each(&) if NativeReader.available?
 
-        each_in_ruby(fields, &block)
+        each_in_ruby(fields, &)
       end
 
       # The same, in Ruby (used when the C reader is not compiled).
-      def each_in_ruby(fields)
+      def each_in_ruby(fields, &)
         return enum_for(:each_in_ruby, fields) unless block_given?
-        return each_slow(fields) { |stanza| yield stanza } if @text.include?("\r") || @text.match?(/^#/)
+        return each_slow(fields, &) if @text.include?("\r") || @text.match?(/^#/)
 
         needles = fields.map { |field| "\n#{field}: ".b }
         prefixes = fields.map { |field| "#{field}: ".b }
@@ -74,7 +74,7 @@ module Relspec
         ends = text.index("\n", from) || text.bytesize
         value = text.byteslice(from, ends - from).force_encoding(Encoding::UTF_8)
         # continuation lines (rare in Packages, but legal)
-        while ends < stop && (text.getbyte(ends + 1) == 32 || text.getbyte(ends + 1) == 9)
+        while ends < stop && [32, 9].include?(text.getbyte(ends + 1))
           following = text.index("\n", ends + 1) || text.bytesize
           value << "\n" << text.byteslice(ends + 1, following - ends - 1)
           ends = following

@@ -57,7 +57,7 @@ module Relspec
 
         binary = File.join(dir, "keyring.gpg")
         _out, err, status = Open3.capture3("gpg", "--homedir", dir, "--batch", "--quiet", "--dearmor",
-                                          "--output", binary, path)
+                                           "--output", binary, path)
         raise Invalid, "#{keyring}: cannot read the armored keyring: #{err.strip}" unless status.success?
 
         binary
@@ -67,7 +67,6 @@ module Relspec
       end
 
       def fail_with(err)
-
         reason = err.lines.grep(/BAD signature|Can't check signature|no valid OpenPGP data|keyblock resource/).first
         raise Invalid, (reason || err.lines.last || "gpgv failed").strip.sub(/\Agpgv: /, "")
       end

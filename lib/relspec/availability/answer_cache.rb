@@ -35,7 +35,9 @@ module Relspec
         state, stamp = File.read(location(key)).split
         found = state == "found"
         age = @clock.call - Integer(stamp, 10)
-        age >= 0 && age < (found ? @found_ttl : @missing_ttl) ? found : nil
+        if age >= 0 && age < (found ? @found_ttl : @missing_ttl)
+          found
+        end
       rescue SystemCallError, ArgumentError, TypeError
         nil
       end

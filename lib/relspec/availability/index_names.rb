@@ -44,7 +44,7 @@ module Relspec
         real, provided = text.split("\n#{SEPARATOR}\n", 2)
         virtual = provided.to_s.split("\n").to_h do |line|
           name, providers = line.split("\t", 2)
-          [name, providers.to_s.split(" ")]
+          [name, providers.to_s.split]
         end
         new(real.split("\n"), virtual)
       end

@@ -1,13 +1,14 @@
 # frozen_string_literal: true
 
 require "json"
-require "time"
 require "net/http"
 require "openssl"
-require "timeout"
 require "uri"
 require_relative "../error"
 require_relative "../http/capped_body"
+require_relative "launchpad_page"
+require_relative "../http/client"
+require_relative "../http/retry"
 
 module Relspec
   module Availability
@@ -46,10 +47,11 @@ module Relspec
                      sleeper: ->(seconds) { sleep(seconds) }, clock: -> { Time.now })
         @base = base.to_s.chomp("/")
         @timeout = timeout
-        @retries = retries
-        @backoff = backoff
-        @sleeper = sleeper
         @clock = clock
+        @client = Http::Client.new(timeout: timeout)
+        @retry = Http::Retry.new(attempts: retries, deadline: timeout * DEADLINE_FACTOR, sleeper: sleeper,
+                                 backoff: ->(attempt) { backoff * (2**(attempt - 1)) },
+                                 max_retry_after: MAX_RETRY_AFTER)
         @requests = 0
         @count = Mutex.new
       end
@@ -67,8 +69,8 @@ module Relspec
         entries = []
         MAX_PAGES.times do
           page = get_json(url, "#{series}/#{arch}")
-          entries.concat(Array(page["entries"]))
-          url = page["next_collection_link"]
+          entries.concat(page.entries)
+          url = page.next_link
           return entries unless url
         end
         raise Failure, "Launchpad: more than #{MAX_PAGES} pages for #{name} on #{series}/#{arch}"
@@ -83,70 +85,26 @@ module Relspec
         "#{@base}/ubuntu/+archive/primary?#{query}"
       end
 
-      # A retryable answer, with the pause the server asked for (or nil).
-      class Retryable < StandardError
-        attr_reader :retry_after
-
-        def initialize(message, retry_after = nil)
-          super(message)
-          @retry_after = retry_after
-        end
-      end
-
-      # Raised when a page passed its overall deadline.
-      class DeadlineExceeded < StandardError; end
-
       def get_json(url, where)
-        attempt = 0
-        started = now
-        begin
-          attempt += 1
-          remaining = (@timeout * DEADLINE_FACTOR) - (now - started)
-          raise DeadlineExceeded if remaining <= 0
-
-          parse(Timeout.timeout(remaining, DeadlineExceeded) { get(URI(url), where) }, url)
-        rescue DeadlineExceeded
-          raise Failure, format("Launchpad: %<url>s: not complete after %<elapsed>.1f s, the deadline of a page " \
-                                "(%<factor>d × the timeout %<timeout>s s; after %<attempts>d attempts)",
-                                url: url, elapsed: now - started, factor: DEADLINE_FACTOR, timeout: @timeout,
-                                attempts: attempt)
-        rescue Net::OpenTimeout, Net::ReadTimeout, SystemCallError, SocketError, IOError, Retryable => e
-          raise Failure, "Launchpad: #{url}: #{describe(e)} (after #{attempt} attempts)" if attempt >= @retries
-
-          @sleeper.call(pause(e, attempt, url))
-          retry
-        rescue OpenSSL::SSL::SSLError, Net::HTTPBadResponse, Net::ProtocolError, URI::InvalidURIError => e
-          raise Failure, "Launchpad: #{url}: #{e.message}"
-        end
-      end
-
-      def pause(error, attempt, url)
-        wait = error.is_a?(Retryable) ? error.retry_after : nil
-        return @backoff * (2**(attempt - 1)) unless wait
-        raise Failure, "Launchpad: #{url}: asked to wait #{wait} s (more than #{MAX_RETRY_AFTER})" if wait > MAX_RETRY_AFTER
-
-        wait
+        parse(@retry.run { get(URI(url), where) }, url)
+      rescue Http::Retry::DeadlineExceeded => e
+        raise Failure, format("Launchpad: %<url>s: not complete after %<elapsed>.1f s, the deadline of a page " \
+                              "(%<factor>d × the timeout %<timeout>s s; after %<attempts>d attempts)",
+                              url: url, elapsed: e.elapsed, factor: DEADLINE_FACTOR, timeout: @timeout,
+                              attempts: e.attempts)
+      rescue Http::Retry::GaveUp => e
+        raise Failure, "Launchpad: #{url}: #{describe(e.last)} (after #{e.attempts} attempts)"
+      rescue Http::Retry::WaitTooLong => e
+        raise Failure, "Launchpad: #{url}: asked to wait #{e.seconds} s (more than #{MAX_RETRY_AFTER})"
+      rescue OpenSSL::SSL::SSLError, Net::HTTPBadResponse, Net::ProtocolError, URI::InvalidURIError => e
+        raise Failure, "Launchpad: #{url}: #{e.message}"
       end
 
       def get(uri, where)
         raise Failure, "Launchpad: #{uri} is not an http(s) URL" unless %w[http https].include?(uri.scheme)
 
         @count.synchronize { @requests += 1 }
-        http = Net::HTTP.new(uri.host, uri.port)
-        http.use_ssl = uri.scheme == "https"
-        http.open_timeout = http.read_timeout = http.ssl_timeout = @timeout
-        http.max_retries = 0 # Net::HTTP would silently resend a timed-out GET; the retries are counted here
-        http.start do
-          request = Net::HTTP::Get.new(uri)
-          request["Accept"] = "application/json"
-          # `return` leaves before Net::HTTP reads the rest of a body that
-          # was not wanted (an error page can be endless too).
-          http.request(request) { |response| return answer(response, uri, where) }
-        end
-      end
-
-      def now
-        Process.clock_gettime(Process::CLOCK_MONOTONIC)
+        @client.get(uri, "Accept" => "application/json") { |response| answer(response, uri, where) }
       end
 
       # The body, read in pieces so that an endless one stops at the cap.
@@ -162,29 +120,13 @@ module Relspec
         when Net::HTTPNotFound, Net::HTTPBadRequest
           raise UnknownSeries, "Launchpad has no Ubuntu series/architecture #{where} (#{uri.host}: HTTP #{response.code})"
         when Net::HTTPTooManyRequests, Net::HTTPServerError
-          raise Retryable.new("HTTP #{response.code} #{response.message}", retry_after(response["Retry-After"]))
+          raise Http::Retryable.answer(response, now: @clock.call)
         else raise Failure, "Launchpad: #{uri}: HTTP #{response.code} #{response.message}"
         end
       end
 
-      # Seconds (the form Launchpad and most services send); an HTTP date
-      # is honoured too.
-      def retry_after(value)
-        return nil if value.nil? || value.strip.empty?
-        return Integer(value.strip, 10) if value.strip.match?(/\A\d+\z/)
-
-        [(Time.httpdate(value) - @clock.call).ceil, 0].max
-      rescue ArgumentError
-        nil
-      end
-
       def parse(body, url)
-        data = JSON.parse(body)
-        raise Failure, "Launchpad: #{url}: the answer is not a collection" unless data.is_a?(Hash) && data.key?("entries")
-
-        data
-      rescue JSON::ParserError => e
-        raise Failure, "Launchpad: #{url}: the answer is not JSON (#{e.message[0, 80]})"
+        LaunchpadPage.parse(body, url, failure: Failure)
       end
 
       def describe(error)

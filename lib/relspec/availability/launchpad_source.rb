@@ -3,6 +3,7 @@
 require_relative "launchpad_client"
 require_relative "answer_cache"
 require_relative "hint"
+require_relative "../worker_pool"
 
 module Relspec
   module Availability
@@ -75,17 +76,8 @@ module Relspec
       # Runs the questions on a few threads; a series Launchpad does not know
       # is asked once, not once per name.
       def ask(questions, answers, problems)
-        queue = Queue.new
-        questions.each { |item| queue << item }
         lock = Mutex.new
-        Array.new([@concurrency, questions.size].min) do
-          Thread.new do
-            Thread.current.report_on_exception = false
-            while (item = next_question(queue))
-              settle(item, answers, problems, lock)
-            end
-          end
-        end.each(&:join)
+        WorkerPool.new(@concurrency).each(questions) { |item| settle(item, answers, problems, lock) }
       end
 
       def settle(item, answers, problems, lock)
@@ -103,12 +95,6 @@ module Relspec
         found = @client.published_binaries(name, series, arch).any? { |entry| entry["binary_package_name"] == name }
         @cache.write(cache_key(item), found)
         found
-      end
-
-      def next_question(queue)
-        queue.pop(true)
-      rescue ThreadError
-        nil
       end
     end
   end

@@ -1,42 +1,69 @@
 # frozen_string_literal: true
 
-require "yaml"
+require_relative "../atomic_file"
+require_relative "../display_path"
 require_relative "../error"
+require_relative "../apt/version"
+require_relative "../yaml/field_reader"
+require_relative "../yaml/located_document"
+require_relative "../yaml/writer"
 
 module Relspec
   module Builder
-    # One target's plan.yml, as `relspec compile` wrote it: the source
-    # packages to build in dependency order, each with the sources of the
-    # same release it needs built first. Packages the release's repository
-    # already holds at their version are not in it (compile decided
-    # "published" for them).
+    # One target's plan.yml: the source packages to build in dependency
+    # order, each with the sources of the same release it needs built first.
+    # Packages the release's repository already holds at their version are
+    # not in it (compile decided "published" for them). One class holds the
+    # writer (`relspec compile`) and the strict reader (`relspec build`):
+    # every key known, every value of its type, names that become paths
+    # checked, build-dependencies only on sources listed before; a damaged
+    # file is an InvalidInput naming file:line.
     class BuildPlan
       FILE = "plan.yml"
+      ROOT_KEYS = %w[release target builds].freeze
+      BUILD_KEYS = %w[package source version dsc build_depends].freeze
       # Source names become folder names (results/<source>, logs/<source>.log).
       SOURCE_NAME = /\A[a-z0-9][a-z0-9.+-]*\z/
+      HINT = "plan.yml is written by `relspec compile`: run it again"
 
-      Entry = Struct.new(:package, :source, :version, :dsc, :build_depends, keyword_init: true)
+      Entry = Struct.new(:package, :source, :version, :dsc, :build_depends, keyword_init: true) do
+        def to_h
+          { "package" => package, "source" => source, "version" => version, "dsc" => dsc, "build_depends" => build_depends }
+        end
+      end
 
       attr_reader :dir, :release, :target, :entries
+
+      # Writes +entries+ (Entry) as <dir>/plan.yml when its text changed;
+      # true when it did.
+      def self.write(dir, release:, target:, entries:)
+        text = Yaml::Writer.dump("release" => release, "target" => target.to_s, "builds" => entries.map(&:to_h))
+        AtomicFile.update(File.join(dir, FILE), text)
+      end
 
       # +dir+: <out>/<release>/<codename>-<arch>.
       def self.read(dir)
         path = File.join(dir, FILE)
-        raise BuildError, "#{path} does not exist: run `relspec compile` first" unless File.file?(path)
+        shown = DisplayPath.of(path)
+        raise BuildError, "#{shown} does not exist: run `relspec compile` first" unless File.exist?(path)
 
-        data = YAML.safe_load(File.read(path))
-        new(dir, data, path)
-      rescue Psych::SyntaxError => e
-        raise BuildError, "#{path}:#{e.line}: cannot be read (#{e.problem}); run `relspec compile` again"
+        new(dir, Yaml::LocatedDocument.load(shown))
       end
 
-      def initialize(dir, data, path)
-        @dir = dir
-        raise BuildError, "#{path}: not a plan written by relspec compile" unless data.is_a?(Hash) && data["builds"].is_a?(Array)
+      def self.parse(text, dir:)
+        new(dir, Yaml::LocatedDocument.parse(text, file: File.join(dir, FILE)))
+      end
 
-        @release = data["release"].to_s
-        @target = data["target"].to_s
-        @entries = data["builds"].map { |build| entry(build, path) }.freeze
+      def initialize(dir, document)
+        @dir = dir
+        @fields = Yaml::FieldReader.new(document, rule: "build-plan", what: "the build plan", hint: HINT)
+        data = @fields.root
+        @fields.known_keys(data, [], ROOT_KEYS)
+        @release = @fields.text(data, ["release"])
+        @target = @fields.text(data, ["target"])
+        @fields.fail_at(["target"], "target #{@target.inspect} is not codename/arch") unless @target.match?(%r{\A[^/]+/[^/]+\z})
+        @entries = builds(data).freeze
+        remove_instance_variable(:@fields)
         freeze
       end
 
@@ -54,12 +81,29 @@ module Relspec
 
       private
 
-      def entry(build, path)
-        source = build["source"].to_s
-        raise BuildError, "#{path}: invalid source name #{source.inspect}" unless source.match?(SOURCE_NAME)
+      def builds(data)
+        seen = {}
+        @fields.list(data, ["builds"], of: "builds").each_with_index.map do |build, index|
+          path = ["builds", index]
+          @fields.fail_at(path, "builds.#{index} must be a mapping") unless build.is_a?(Hash)
+          @fields.known_keys(build, path, BUILD_KEYS)
+          entry(build, path, seen).tap { |made| seen[made.source] = true }
+        end
+      end
 
-        Entry.new(package: build["package"].to_s, source: source, version: build["version"].to_s,
-                  dsc: build["dsc"].to_s, build_depends: Array(build["build_depends"]).map(&:to_s).freeze).freeze
+      def entry(build, path, seen)
+        source = @fields.text(build, path + ["source"])
+        @fields.fail_at(path + ["source"], "invalid source name #{source.inspect}") unless source.match?(SOURCE_NAME)
+        @fields.fail_at(path + ["source"], "#{source} is listed twice") if seen[source]
+        version = @fields.text(build, path + ["version"])
+        @fields.fail_at(path + ["version"], "invalid Debian version #{version.inspect}") unless Apt::Version.valid?(version)
+        needs = @fields.list(build, path + ["build_depends"], of: "source names").each_with_index.map do |need, at|
+          @fields.fail_at(path + ["build_depends", at], "#{need.inspect} is not a source listed before #{source}") \
+            unless need.is_a?(String) && seen[need]
+          need
+        end
+        Entry.new(package: @fields.text(build, path + ["package"]), source: source, version: version,
+                  dsc: @fields.plain_path(build, path + ["dsc"]), build_depends: needs.freeze).freeze
       end
     end
   end

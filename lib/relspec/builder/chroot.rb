@@ -1,9 +1,12 @@
 # frozen_string_literal: true
 
 require "fileutils"
+require "open3"
 require_relative "../error"
 require_relative "../cache_dir"
 require_relative "../temporaries"
+require_relative "emulation"
+require_relative "shell_line"
 
 module Relspec
   module Builder
@@ -25,14 +28,23 @@ module Relspec
 
       # +distribution+: ReleaseSpec::Distribution of the codename; +os_release+:
       # the host's /etc/os-release (read to know the host's own codename).
-      def initialize(target, distribution, tool, cache_dir: CacheDir.for("chroots"), os_release: "/etc/os-release")
+      # +emulation+: checks that this machine runs the target's binaries.
+      def initialize(target, distribution, tool, cache_dir: CacheDir.for("chroots"), os_release: "/etc/os-release",
+                     emulation: Emulation.new(Chroot.host_arch))
         @target = target
         @distribution = distribution
         @tool = tool
         raise BuildError, "no cache folder for chroot tarballs (set XDG_CACHE_HOME or HOME)" unless cache_dir
 
-        @path = File.join(cache_dir, "#{target.codename}-#{target.arch}.tar.zst")
+        @path = File.join(cache_dir, "#{target.dir_name}.tar.zst")
         @os_release = os_release
+        @emulation = emulation
+      end
+
+      # This machine's Debian architecture.
+      def self.host_arch
+        output, status = Open3.capture2("dpkg", "--print-architecture")
+        status.success? ? output.strip : "amd64"
       end
 
       def exist?
@@ -44,15 +56,14 @@ module Relspec
       def ensure(log)
         return false if exist?
 
+        @emulation.check(@target.arch)
         mirrors = mirrors_or_raise
         FileUtils.mkdir_p(File.dirname(@path))
         # a killed mmdebstrap leaves hundreds of MB behind
         Temporaries.sweep(File.dirname(@path))
         partial = Temporaries.path(File.dirname(@path), File.basename(@path, ".tar.zst"), suffix: ".tar.zst")
         begin
-          @tool.run("chroot #{@target}", ["mmdebstrap", "--variant=buildd", "--mode=unshare", "--arch=#{@target.arch}",
-                                          "--include=#{INCLUDE.join(',')}",
-                                          *components_option, @target.codename, partial, *mirrors], log: log)
+          @tool.run("chroot #{@target}", command(partial, mirrors), log: log)
           File.rename(partial, @path)
         ensure
           FileUtils.rm_f(partial)
@@ -60,7 +71,22 @@ module Relspec
         true
       end
 
+      # Shell lines that make the tarball where it is missing (a Slurm
+      # chroot-prepare job, on a node of the target's architecture).
+      def job_steps
+        # mmdebstrap picks the format by the name's ending
+        partial = File.join(File.dirname(@path), ".#{File.basename(@path, '.tar.zst')}.partial.tar.zst")
+        ["if [ ! -f #{ShellLine.quote(@path)} ]; then mkdir -p #{ShellLine.quote(File.dirname(@path))} && " \
+         "#{ShellLine.join(command(partial, mirrors_or_raise))} && mv #{ShellLine.quote(partial)} " \
+         "#{ShellLine.quote(@path)}; fi"]
+      end
+
       private
+
+      def command(partial, mirrors)
+        ["mmdebstrap", "--variant=buildd", "--mode=unshare", "--arch=#{@target.arch}", "--include=#{INCLUDE.join(',')}",
+         *components_option, @target.codename, partial, *mirrors]
+      end
 
       def archive
         @distribution&.archive || {}

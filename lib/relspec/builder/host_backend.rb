@@ -5,6 +5,7 @@ require "open3"
 require "tmpdir"
 require_relative "../error"
 require_relative "produced_files"
+require_relative "shell_line"
 
 module Relspec
   module Builder
@@ -53,6 +54,31 @@ module Relspec
         end
       end
 
+      # The shell lines of a Slurm job that builds +request+ in the folder
+      # +work+ (Slurm::JobScript runs them there). The node's installed
+      # packages are the build-dependencies (dpkg-buildpackage -d: no check
+      # there); +local_debs+ (files or folders of .debs) are laid over /opt.
+      def job_steps(request, work)
+        debs = request.repositories.flat_map { |repository| repository.pool_debs(request.target) } + request.local_debs
+        build = ["dpkg-buildpackage", "-us", "-uc", "-b", "-d"]
+        steps = [ShellLine.join(["dpkg-source", "-x", request.dsc, File.join(work, "source")])]
+        unless debs.empty?
+          root = File.join(work, "local-root")
+          steps << ShellLine.join(["mkdir", "-p", File.join(root, "opt")])
+          # a folder (the results of a package built earlier in the run) gives all its .debs
+          patterns = debs.map { |deb| deb.end_with?(".deb") ? ShellLine.quote(deb) : "#{ShellLine.quote(deb)}/*.deb" }
+          steps << "for deb in #{patterns.join(' ')}; do [ ! -f \"$deb\" ] || dpkg-deb -x \"$deb\" " \
+                   "#{ShellLine.quote(root)}; done"
+          build = overlay_prefix(root) + build
+        end
+        steps << "cd source && #{ShellLine.join(build)}"
+      end
+
+      # Nothing to prepare on a node either.
+      def prepare_steps(_target)
+        ["true"]
+      end
+
       private
 
       # The build-dependencies missing on this machine, less the ones built
@@ -76,7 +102,7 @@ module Relspec
                             "them, or build with --backend sbuild), see #{request.log}"
         end
         relations.flat_map { |relation| relation.split(/\s*\|\s*/) }
-             .filter_map { |alt| local[alt[/\A[^\s(:]+/]] }.uniq
+                 .filter_map { |alt| local[alt[/\A[^\s(:]+/]] }.uniq
       end
 
       # The command prefix that runs a build with +debs+ visible under /opt.
@@ -84,6 +110,10 @@ module Relspec
         root = File.join(work, "local-root")
         FileUtils.mkdir_p(File.join(root, "opt"))
         debs.each { |deb| @tool.run(request.source, ["dpkg-deb", "-x", deb, root], log: request.log) }
+        overlay_prefix(root)
+      end
+
+      def overlay_prefix(root)
         ["unshare", "--mount", "--propagation", "private", "sh", "-c",
          'mount -t overlay relspec-build -o "lowerdir=$0/opt:/opt" /opt && exec "$@"', root]
       end

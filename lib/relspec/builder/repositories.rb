@@ -6,37 +6,30 @@ module Relspec
   module Builder
     # The apt repositories a release's builds take build-dependencies from:
     # the release's own repository and every ancestor's, in search order, as
-    # their specs (or `external:` entries) declare them. Relative paths are
-    # relative to the declaring spec's folder; a local path is preferred
-    # when it exists, as when planning.
+    # their specs (or `external:` entries) declare them, found where
+    # ReleaseSpec::RepositoryEntry#location says, as when planning.
     module Repositories
       module_function
 
       def of(resolution, codename)
-        own = [[resolution.effective.release, resolution.effective["repository"], resolution.spec_file.path]]
+        own = [[resolution.effective.release, resolution.effective.repository]]
         ancestors = resolution.hierarchy.ancestors.map do |node|
           if node.external?
-            release = node.source
-            [release.name, %w[path url keyring trusted].to_h { |key| [key, release.value(key)] }.compact,
-             release.declared_in.path]
+            [node.source.name, node.source.repository]
           else
             spec = ReleaseSpec::Resolution.new(resolution.hierarchy.library, node.source)
-            [spec.effective.release, spec.effective["repository"], node.source.path]
+            [spec.effective.release, spec.effective.repository]
           end
         end
-        (own + ancestors).filter_map { |name, entry, file| repository(name, entry, File.dirname(file), codename) }
+        (own + ancestors).filter_map { |name, entry| repository(name, entry, codename) }
       end
 
-      def repository(name, entry, base, codename)
-        return nil unless entry.is_a?(Hash)
-
-        path = entry["path"] && File.expand_path(entry["path"], base)
-        uri = path && (File.directory?(path) || !entry["url"]) ? path : entry["url"]
+      def repository(name, entry, codename)
+        uri = entry&.location
         return nil unless uri
 
-        Repository.new(name: name, uri: uri, suite: codename, components: ["main"],
-                       keyring: entry["keyring"] && File.expand_path(entry["keyring"], base),
-                       trusted: entry["trusted"] == true)
+        Repository.new(name: name, uri: uri, suite: codename, components: ["main"], keyring: entry.keyring,
+                       trusted: entry.trusted)
       end
     end
   end

@@ -1,5 +1,7 @@
 # frozen_string_literal: true
 
+require_relative "../target"
+
 module Relspec
   module Builder
     # What a backend gets to build one source package (docs/ARCHITECTURE.md,
@@ -12,12 +14,7 @@ module Relspec
     Request = Struct.new(:source, :version, :dsc, :target, :repositories, :local_debs, :output_dir, :log,
                          keyword_init: true)
 
-    # A build target: a distribution codename and an architecture.
-    Target = Struct.new(:codename, :arch) do
-      def to_s
-        "#{codename}/#{arch}"
-      end
-    end
+    Target = Relspec::Target
 
     # An apt repository a build can use: +uri+ (http(s) or a local folder),
     # the +suite+ (the target's codename) and +components+; +keyring+: the

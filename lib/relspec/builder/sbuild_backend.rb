@@ -5,6 +5,7 @@ require "tmpdir"
 require_relative "chroot"
 require_relative "../error"
 require_relative "produced_files"
+require_relative "shell_line"
 
 module Relspec
   module Builder
@@ -44,15 +45,33 @@ module Relspec
       def build(request)
         prepare(request.target, log: request.log)
         Dir.mktmpdir("relspec-sbuild") do |work|
-          command = ["sbuild", "--chroot-mode=unshare", "--chroot=#{chroot(request.target).path}",
-                     "--dist=#{request.target.codename}", "--arch=#{request.target.arch}", "--arch-all", "--no-source",
-                     "--no-run-lintian", "--no-run-piuparts", "--no-run-autopkgtest", "--no-apt-upgrade",
-                     "--no-apt-distupgrade", "--nolog", "--build-dir=#{work}",
-                     *repository_options(request), *request.local_debs.map { |deb| "--extra-package=#{deb}" },
-                     request.dsc]
-          @tool.run(request.source, command, log: request.log, chdir: work)
+          @tool.run(request.source, command(request, work), log: request.log, chdir: work)
           ProducedFiles.collect(work, request.output_dir)
         end
+      end
+
+      # sbuild's command line for +request+, building in the folder +work+;
+      # the same on this machine and in a Slurm job. +local_debs+ may name
+      # folders of .debs (sbuild takes every .deb in them).
+      def command(request, work)
+        ["sbuild", "--chroot-mode=unshare", "--chroot=#{chroot(request.target).path}",
+         "--dist=#{request.target.codename}", "--arch=#{request.target.arch}", "--arch-all", "--no-source",
+         "--no-run-lintian", "--no-run-piuparts", "--no-run-autopkgtest", "--no-apt-upgrade",
+         "--no-apt-distupgrade", "--nolog", "--build-dir=#{work}",
+         *repository_options(request), *request.local_debs.map { |deb| "--extra-package=#{deb}" },
+         request.dsc]
+      end
+
+      # The shell lines of a Slurm job that builds +request+ in +work+
+      # (Slurm::JobScript runs them in that folder).
+      def job_steps(request, work)
+        [ShellLine.join(command(request, work))]
+      end
+
+      # The shell lines of the job that makes the target's chroot tarball
+      # on a node, unless the shared folder has it.
+      def prepare_steps(target)
+        chroot(target).job_steps
       end
 
       private

@@ -54,6 +54,7 @@ module Relspec
             on_done&.call(outcome)
           end
           break if pending.empty? && running.empty?
+
           if running.empty? && stopped
             pending.each do |entry|
               outcome = Outcome.new(entry: entry, status: :skipped,

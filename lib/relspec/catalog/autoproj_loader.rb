@@ -14,6 +14,8 @@ require_relative "copyright_holders"
 
 module Relspec
   class Catalog
+    # Loads an autoproj workspace in-process (its manifest, package sets and
+    # package manifests) the way autoproj itself would, for the catalog.
     module AutoprojLoader
       # Raised for workspace problems a user must fix; printed as a diagnostic.
       class WorkspaceProblem < StandardError
@@ -67,6 +69,21 @@ module Relspec
         def validate_ruby_executable; end
       end
 
+      # Package sets do file work in post_import blocks (rock.core's rtt block
+      # deletes a stale generated file from the checkout). The blocks run
+      # for what they declare (dependencies, defines, options); inside them
+      # FileUtils' writing methods do nothing, so a load stays read only.
+      module QuietFileWrites
+        WRITERS = %i[rm rm_f rm_r rm_rf remove_file remove_dir mkdir mkdir_p makedirs cp cp_r mv ln ln_s ln_sf touch
+                     install chmod chmod_R chown].freeze
+
+        WRITERS.each do |writer|
+          define_method(writer) do |*args, **options, &block|
+            Thread.current[:relspec_quiet_file_writes] ? nil : super(*args, **options, &block)
+          end
+        end
+      end
+
       BUILD_TYPES = {
         "Autobuild::Orogen" => "orogen", "Autobuild::CMake" => "cmake", "Autobuild::Autotools" => "autotools",
         "Autobuild::Ruby" => "ruby", "Autobuild::Python" => "python", "Autobuild::ImporterPackage" => "import"
@@ -97,7 +114,7 @@ module Relspec
         raise unless (missing = e.message[/'([^']+)' is neither a remote source specification, nor an existing local directory/, 1])
 
         raise WorkspaceProblem.new("missing-package-set", "package set #{missing} does not exist", file: "autoproj/manifest",
-                                                                                                  hint: "check `package_sets:` in autoproj/manifest, or run `autoproj update`")
+                                                                                                   hint: "check `package_sets:` in autoproj/manifest, or run `autoproj update`")
       ensure
         reset_global_state
       end
@@ -122,7 +139,7 @@ module Relspec
           line = invalid[2][/Line: (\d+)/, 1]&.to_i
           reason = invalid[2].lines.first.strip
           return WorkspaceProblem.new("package-manifest", "broken manifest.xml: #{reason}", file: invalid[1], line: line,
-                                                                                             hint: "fix the XML of the package's manifest.xml")
+                                                                                            hint: "fix the XML of the package's manifest.xml")
         end
         WorkspaceProblem.new("autoproj", message.lines.first(6).join.strip, hint: "autoproj could not load the workspace")
       end
@@ -133,6 +150,7 @@ module Relspec
         Autoproj::Ops::Configuration.prepend(ReadOnlyConfiguration)
         Autoproj::Configuration.prepend(AnyRubyConfiguration)
         # autoproj's DSL helper creates <srcdir>/.test-results; keep the rest of it.
+        FileUtils.singleton_class.prepend(QuietFileWrites)
         Object.send(:define_method, :ruby_package_default_test_task) do |pkg|
           pkg.with_tests if pkg.test_utility.source_dir
         end
@@ -173,10 +191,28 @@ module Relspec
             ws.manifest.load_package_manifest(definition.name)
           end
         end
+        run_post_import_blocks(ws)
         ws.finalize_setup(read_only: true)
         extract(ws, manifests)
       ensure
         ws&.clear_main_workspace
+      end
+
+      # What autoproj runs after importing each package that is checked out,
+      # neither excluded nor ignored (Ops::Import): the package sets'
+      # post_import blocks, which add dependencies (typelib's C++ importer,
+      # castxml) and settings. A block may exclude a package itself.
+      def run_post_import_blocks(ws)
+        manifest = ws.manifest
+        Thread.current[:relspec_quiet_file_writes] = true
+        manifest.each_package_definition do |definition|
+          next unless definition.checked_out?
+          next if manifest.excluded?(definition.name) || manifest.ignored?(definition.name)
+
+          Autoproj.each_post_import_block(definition) { |block| block.call(definition.autobuild) }
+        end
+      ensure
+        Thread.current[:relspec_quiet_file_writes] = nil
       end
 
       # What Manifest#load_package_manifest does, from another file: the
@@ -189,6 +225,7 @@ module Relspec
 
       def reset_global_state
         Autobuild::Package.clear
+        Autoproj.post_import_blocks.clear
         Rake::Task.clear
         Autoproj.workspace = nil
         Autobuild.env = nil
@@ -218,7 +255,7 @@ module Relspec
       def os_dependencies_of(autobuild, resolved)
         _, optional = autobuild.partition_optional_dependencies
         optional -= autobuild.os_packages.to_a
-        kept, missing = optional.partition { |name| (resolved[name].keys & %w[nonexistent unresolved]).empty? }
+        kept, missing = optional.partition { |name| !resolved[name].keys.intersect?(%w[nonexistent unresolved]) }
         merged = merge_classified((autobuild.os_packages.to_a + kept).sort.map { |name| resolved[name] })
         merged["optional_missing"] = missing.sort unless missing.empty?
         merged
@@ -233,7 +270,8 @@ module Relspec
         end
         {
           "metapackages" => metapackages, "layout" => manifest.normalized_layout.keys,
-          "excluded" => manifest.manifest_exclusions.to_a.sort,
+          # the manifest's exclusions and the package sets' (add_exclusion)
+          "excluded" => manifest.each_excluded_package.map(&:name).sort,
           "ignored" => manifest.each_ignored_package.map(&:name).sort
         }
       end
@@ -329,4 +367,3 @@ module Relspec
     end
   end
 end
-

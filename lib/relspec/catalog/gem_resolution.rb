@@ -10,9 +10,9 @@ require_relative "../error"
 
 module Relspec
   class Catalog
-    # Which gems the release packages without being told (DESIGN: "all
-    # external Ruby gems that are required by a package … automatically
-    # become part of the generated binary release"). A gem osdep of a
+    # Which gems the release packages without being told: every external
+    # Ruby gem a package requires becomes part of the binary release
+    # (docs/compile.md, Gem resolution). A gem osdep of a
     # selected package, and a runtime dependency of a gem the release
     # packages, is:
     #
@@ -182,10 +182,27 @@ module Relspec
 
       def unresolvable(name, listed)
         asked = @requests[name].map { |requirement, who| "#{who} (#{requirement})" }.join(", ")
-        there = listed.empty? ? "it has none" : "it has #{listed.first(5).join(', ')}#{listed.size > 5 ? ', …' : ''}"
+        there = if listed.empty?
+                  "it has none"
+                else
+                  "it has #{listed.first(5).join(', ')}#{', …' if listed.size > 5}"
+                end
         Diagnostic.error("gem-unresolvable", "no version of gem #{name} in #{@versions.where} fits what is asked: " \
                                              "#{asked}; #{there}",
-                         location: @location, hint: "add a fitting #{name} to gem_source, or pin one with gems:")
+                         location: @location, hint: fetch_hint(name))
+      end
+
+      # Offline, a folder source is filled by hand: say how. Every gem
+      # missing at this depth is its own error of the same run; what they
+      # need in turn is known only from their .gem, hence `gem install`,
+      # which fetches the whole closure at once.
+      def fetch_hint(name)
+        return "add a fitting #{name} to gem_source, or pin one with gems:" unless @versions.folder?
+
+        requirement = @requests[name].map(&:first).reject(&:none?).flat_map(&:as_list).uniq.join(", ")
+        version = requirement.empty? ? "" : " -v '#{requirement}'"
+        "fetch it into #{@versions.where}: `gem fetch #{name}#{version}`; with the gems it needs: " \
+          "`gem install --install-dir <dir> --no-document #{name}#{version}`, then copy <dir>/cache/*.gem there"
       end
 
       def fetch(name, version)
@@ -204,8 +221,8 @@ module Relspec
 
         @problems << Diagnostic.error("gem-cycle", "gems #{cycle.join(' → ')} need each other: no build order makes " \
                                                    "their packages", location: @location,
-                                                   hint: "take one of them from the distribution (its archive), or " \
-                                                         "package them by hand")
+                                                                     hint: "take one of them from the distribution (its archive), or " \
+                                                                           "package them by hand")
       end
 
       def cycle_from(name, edges, path)
@@ -221,7 +238,7 @@ module Relspec
 
       def notes
         unchecked = @archives.select { |_, found| found.nil? }.keys.sort
-        asked = @requests.keys - @pinned.keys - @chosen.select { |_, version| version != :system }.keys
+        asked = @requests.keys - @pinned.keys - @chosen.reject { |_, version| version == :system }.keys
         return [] if unchecked.empty? || asked.empty?
 
         ["gem osdeps are not checked on #{unchecked.join(', ')} (no distribution archive: " \

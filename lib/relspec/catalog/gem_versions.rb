@@ -22,6 +22,8 @@ module Relspec
       # A compact index of a gem with a very long history (aws-sdk-core) is
       # a few hundred kB; what is larger is not one.
       MAX_BYTES = 8 * 1024 * 1024
+      # A compact index line's first field: a gem version, maybe -platform.
+      INDEX_VERSION = /\A[0-9][0-9A-Za-z.]*(-[A-Za-z0-9_.-]+)?\z/
 
       # +source+: gem_source as written; +base_dir+: where a relative
       # folder starts.
@@ -34,6 +36,10 @@ module Relspec
 
       def where
         @fetcher.remote? ? "#{@source}/info/<name>" : @source
+      end
+
+      def folder?
+        !@fetcher.remote?
       end
 
       # Gem::Versions of +name+, highest first; [] when the source has none.
@@ -56,13 +62,27 @@ module Relspec
         text = @fetcher.fetch("info/#{name}", max_bytes: MAX_BYTES)
         return [] unless text
 
-        text.force_encoding(Encoding::UTF_8).each_line.filter_map do |line|
-          next if line.start_with?("---")
-
-          release(line.split(" ", 2).first)
-        end
+        index_versions(text.force_encoding(Encoding::UTF_8), "#{@source}/info/#{name}")
       rescue Apt::Fetcher::Failure => e
         raise Problem, "cannot list the versions of gem #{name}: #{e.message}"
+      end
+
+      # The versions of a compact index, every line checked: a page that is
+      # not one (a proxy's HTML, a truncated or binary answer) is a Problem
+      # naming the URL and line, never "this gem has no versions".
+      def index_versions(text, url)
+        raise Problem, "#{url}: not a compact index (not UTF-8 text)" unless text.valid_encoding?
+
+        text.each_line.with_index(1).filter_map do |line, number|
+          next if number == 1 && line.chomp == "---"
+
+          version, rest = line.chomp.split(" ", 2)
+          unless version&.match?(INDEX_VERSION) && rest&.include?("|") && line.end_with?("\n")
+            raise Problem, "#{url}:#{number}: not a compact index line (\"VERSION DEPENDENCIES|checksum:SHA256\"): " \
+                           "#{line.chomp[0, 60].inspect}"
+          end
+          release(version)
+        end
       end
 
       # A plain release version, or nil (platform, prerelease, not a version).

@@ -90,7 +90,7 @@ module Relspec
 
       def offset_at(index, offsets, count, position)
         offset = index.byteslice(offsets + (position * 4), 4).unpack1("N")
-        return offset if offset & 0x80000000 == 0
+        return offset if offset.nobits?(0x80000000)
 
         index.byteslice(offsets + (count * 4) + ((offset & 0x7fffffff) * 8), 8).unpack1("Q>")
       end
@@ -101,7 +101,7 @@ module Relspec
           byte = pack.readbyte
           return nil unless ((byte >> 4) & 7) == COMMIT_TYPE
 
-          byte = pack.readbyte while byte & 0x80 != 0
+          byte = pack.readbyte while byte.anybits?(0x80)
           inflater = Zlib::Inflate.new
           body = +""
           body << inflater.inflate(pack.read(4096)) until inflater.finished?

@@ -45,22 +45,20 @@ module Relspec
       end
 
       # Every package of the workspace this one needs when it is built.
-      def build_dependencies
-        @build_dependencies
-      end
+      attr_reader :build_dependencies
 
       def os_dependencies_for(codename)
         os_dependencies.fetch(codename, OsDependencies::EMPTY)
       end
 
       def with(**changes)
-        self.class.new(**FIELDS.to_h { |field| [field, public_send(field)] }.merge(changes))
+        self.class.new(**FIELDS.to_h { |field| [field, public_send(field)] }, **changes)
       end
 
       def ==(other)
         other.is_a?(Package) && to_h == other.to_h
       end
-      alias_method :eql?, :==
+      alias eql? ==
 
       def hash
         to_h.hash

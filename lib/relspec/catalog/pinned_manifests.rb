@@ -17,7 +17,7 @@ module Relspec
 
       module_function
 
-      # +pins+: name => {"commit"|"tag"|"branch" => value}; +root+: the
+      # +pins+: name => ReleaseSpec::Pin; +root+: the
       # workspace. Returns name => manifest.xml text. A pin the checkout
       # does not have is left to Pinning, which reports it.
       def of(catalog, pins, root)
@@ -33,8 +33,7 @@ module Relspec
       end
 
       def at_pin(dir, pin)
-        ref, value = pin.first
-        commit, = GitState.resolve(dir, ref, value.to_s)
+        commit, = GitState.resolve(dir, pin.ref, pin.value.to_s)
         return nil unless commit
 
         text, status = Open3.capture2("git", "-C", dir, "show", "#{commit}:manifest.xml", err: File::NULL)

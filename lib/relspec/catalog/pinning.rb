@@ -17,7 +17,7 @@ module Relspec
     # error. From a snapshot, a commit pin is taken as written and its time
     # stays unknown.
     class Pinning
-      # +pins+: package => {"commit"|"tag"|"branch" => value}; +root+: the
+      # +pins+: package => ReleaseSpec::Pin; +root+: the
       # workspace root, or nil for a snapshot; +locate+: name => Location of
       # the pin, for messages.
       def self.apply(catalog, pins, root:, locate: ->(_name) {})
@@ -47,8 +47,9 @@ module Relspec
       private
 
       def pinned(package, pin)
-        ref, value = pin.first
-        vcs = package.vcs.pinned(pin)
+        ref = pin.ref
+        value = pin.value
+        vcs = package.vcs.pinned(pin.to_h)
         return from_snapshot(package, vcs, ref, value) if @root.nil?
 
         commit, time = GitState.resolve(File.join(@root, package.source_dir), ref, value)

@@ -9,6 +9,8 @@ require_relative "release_gems"
 require_relative "gem_resolution"
 require_relative "../display_path"
 require_relative "../release_spec/package_pattern"
+require_relative "../release_spec/leave_out"
+require_relative "../suggestion"
 
 module Relspec
   class Catalog
@@ -20,6 +22,15 @@ module Relspec
     # GemResolution::Result (gems packaged without `gems:`).
     class ReleaseCatalog
       attr_reader :catalog, :selections, :workspace, :gems, :gem_resolution
+
+      # The selections of the target codename +codename+ only (nil: all).
+      def selections_on(codename)
+        return selections unless codename
+        raise InvalidOption, "#{codename} is not a target codename of this release (#{selections.keys.join(', ')})" \
+          unless selections.key?(codename)
+
+        selections.slice(codename)
+      end
 
       # The selected names on one codename, with their packages, and the
       # selected packages that cannot exist there (name => Selection::Unavailable).
@@ -44,14 +55,14 @@ module Relspec
         distributions = effective.distributions.slice(*effective.targets.keys)
         catalog = Source.load(workspace, distributions, cache: cache)
         root = SnapshotSource.snapshot?(workspace) ? nil : workspace
-        pins = effective["pins"] || {}
+        pins = effective.pins
         # a pinned commit declares its own dependencies: load again with its manifest
         manifests = root ? PinnedManifests.of(catalog, pins, root) : {}
         catalog = Source.load(workspace, distributions, cache: cache, manifests: manifests) unless manifests.empty?
         pinned = Pinning.apply(catalog, pins, root: root,
                                               locate: ->(name) { effective.pin_origin(name)&.location })
         selections = select_all(pinned, effective, spec_file, workspace)
-        catalog, names = Metapackages.add(pinned, effective["select"], selections)
+        catalog, names = Metapackages.add(pinned, effective.select, selections)
         gem_fetch ||= ReleaseGems.fetcher(effective, File.dirname(resolution.spec_file.path), timeout: timeout)
         resolved = resolve_gems(catalog, names, resolution, gem_fetch, gem_archives, locked_gems, timeout)
         catalog, names, gems = add_gems(catalog, names, resolution, gem_fetch, resolved)
@@ -59,7 +70,7 @@ module Relspec
       end
 
       def self.workspace_path(spec_file, effective)
-        path = effective["workspace"]
+        path = effective.workspace
         unless path
           raise InvalidInput, [Diagnostic.error("missing-workspace", "release #{effective.release} names no workspace",
                                                 location: spec_file.location(["release"]),
@@ -69,14 +80,17 @@ module Relspec
       end
 
       def self.select_all(catalog, effective, spec_file, workspace)
-        select = effective["select"]
+        select = effective.select
         locate = lambda do |name|
           index = select&.index(name)
           index ? spec_file.location(["select", index]) : nil
         end
         problems = []
+        leave_out = ReleaseSpec::LeaveOut.of(effective)
+        problems.concat(unmatched_leave_out(catalog, leave_out, effective))
         selections = effective.targets.keys.sort.to_h do |codename|
-          [codename, Selection.resolve(catalog, select, codename: codename, workspace: workspace, locate: locate)]
+          [codename, Selection.resolve(catalog, select, codename: codename, workspace: workspace, locate: locate,
+                                                        leave_out: ->(name) { leave_out.match(name, codename) })]
         rescue InvalidInput => e
           problems.concat(e.diagnostics)
           [codename, nil]
@@ -86,16 +100,27 @@ module Relspec
         selections
       end
 
+      # A `leave_out` entry that matches no package of the workspace is a
+      # typo or a stale entry, as an unmatched blacklist entry is.
+      def self.unmatched_leave_out(catalog, leave_out, effective)
+        origin = effective.origin("leave_out")
+        leave_out.entries.reject { |entry| catalog.names.any? { |name| entry.pattern.match?(name) } }.map do |entry|
+          Diagnostic.error("unmatched-leave-out", "leave_out entry #{entry.pattern.source.inspect} matches no package of the workspace",
+                           location: origin&.file&.location(origin.path + [entry.index, "match"]),
+                           hint: Suggestion.hint(entry.pattern.source, catalog.names) || "remove the entry, or fix the match")
+        end
+      end
+
       def self.resolve_gems(catalog, names, resolution, fetch, archives, locked, timeout)
         return GemResolution::NONE unless archives
 
         effective = resolution.effective
         spec_dir = File.dirname(resolution.spec_file.path)
-        blacklist = (effective["blacklist"] || []).map { |entry| ReleaseSpec::PackagePattern.parse(entry["match"]) }
+        blacklist = effective.blacklist
         selected = names.to_h { |codename, list| [codename, list.select { |name| catalog.package?(name) }] }
-        GemResolution.new(catalog: catalog, selected: selected, pinned: effective["gems"] || {}, archives: archives,
-                          locked: locked, versions: GemVersions.new(effective["gem_source"], base_dir: spec_dir, timeout: timeout),
-                          fetch: fetch, blacklisted: ->(name) { blacklist.any? { |pattern| pattern.match?(name) } },
+        GemResolution.new(catalog: catalog, selected: selected, pinned: effective.gems, archives: archives,
+                          locked: locked, versions: GemVersions.new(effective.gem_source, base_dir: spec_dir, timeout: timeout),
+                          fetch: fetch, blacklisted: ->(name) { blacklist.any? { |entry| entry.match?(name) } },
                           location: effective.origin("gem_source")&.location || resolution.spec_file.location(["release"]))
                      .call
       end
@@ -103,7 +128,7 @@ module Relspec
       def self.add_gems(catalog, names, resolution, fetch, resolved)
         effective = resolution.effective
         locate = ->(name) { effective.entry_location("gems", name) }
-        gems = (effective["gems"] || {}).merge(resolved.automatic)
+        gems = effective.gems.merge(resolved.automatic)
         ReleaseGems.add(catalog, gems, names, fetch: fetch, locate: locate, provided: resolved.provided)
       end
 

@@ -142,7 +142,7 @@ module Relspec
       def fetcher(effective, spec_dir, timeout: 10, cache_dir: CacheDir.for("gems"))
         read = {}
         lambda do |name, version|
-          read[[name, version]] ||= GemArchive.fetch(name, version, source: effective["gem_source"], base_dir: spec_dir,
+          read[[name, version]] ||= GemArchive.fetch(name, version, source: effective.gem_source, base_dir: spec_dir,
                                                                     cache_dir: cache_dir, timeout: timeout)
         end
       end

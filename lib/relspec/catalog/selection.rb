@@ -12,29 +12,35 @@ module Relspec
     #
     # A package whose OS dependency is `nonexistent` on the codename cannot
     # be built there, and neither can what requires it; autoproj excludes
-    # them the same way. They are left out of +names+ and kept in
+    # them the same way. The spec's `leave_out` entries work the same way. They are left out of +names+ and kept in
     # +unavailable+ with the reason, so a release can span distributions
     # where part of the stack does not exist.
     class Selection
       attr_reader :names, :roots, :unavailable
 
       # Why a package is unavailable on the codename: its own +osdeps+
-      # marked nonexistent there, or a required +dependency+ that is
-      # unavailable itself.
-      Unavailable = Struct.new(:osdeps, :dependency, keyword_init: true)
+      # marked nonexistent there, the spec's `leave_out` entry that leaves
+      # it out (+left_out+: ReleaseSpec::LeaveOut::Entry), or a required
+      # +dependency+ that is unavailable itself.
+      Unavailable = Struct.new(:osdeps, :left_out, :dependency, keyword_init: true)
 
       # +select+: names from the spec, or nil for the layout; +codename+: the
       # target whose OS dependencies must all resolve; +locate+: name =>
       # Location of the `select` entry, for messages. Raises InvalidInput.
       # +workspace+: where the catalog came from, for problems of the workspace.
-      def self.resolve(catalog, select, codename:, workspace:, locate: ->(_name) {})
-        new(catalog, select, codename, workspace, locate)
+      # +leave_out+: name → the `leave_out` entry that leaves it out on this
+      # codename, or nil; such packages are unavailable like those with
+      # nonexistent OS dependencies (what requires them too, an optional
+      # dependency is dropped), and need no checkout.
+      def self.resolve(catalog, select, codename:, workspace:, locate: ->(_name) {}, leave_out: ->(_name) {})
+        new(catalog, select, codename, workspace, locate, leave_out)
       end
 
-      def initialize(catalog, select, codename, workspace, locate)
+      def initialize(catalog, select, codename, workspace, locate, leave_out)
         @catalog = catalog
         @codename = codename
         @locate = locate
+        @leave_out = leave_out
         @fallback = Location.file_only(workspace)
         @problems = []
         @roots = expand_roots(select || catalog.layout)
@@ -64,8 +70,10 @@ module Relspec
           if @catalog.metapackage?(name)
             @catalog.metapackages[name].reject { |member| dropped?(member) }
           elsif @catalog.package?(name)
-            problem("excluded-package", "#{name} is selected but excluded by the workspace manifest",
-                    location: @locate.call(name)) if excluded?(name)
+            if excluded?(name)
+              problem("excluded-package", "#{name} is selected but excluded by the workspace manifest",
+                      location: @locate.call(name))
+            end
             [name]
           else
             unknown(name)
@@ -95,6 +103,10 @@ module Relspec
       def unavailable_among(selected)
         found = {}
         selected.each do |name|
+          if (entry = @leave_out.call(name))
+            found[name] = Unavailable.new(left_out: entry).freeze
+            next
+          end
           missing = @catalog.package(name).os_dependencies_for(@codename).nonexistent
           found[name] = Unavailable.new(osdeps: missing).freeze unless missing.empty?
         end

@@ -4,6 +4,7 @@ require_relative "../catalog"
 require_relative "../yaml/writer"
 require_relative "../yaml/located_document"
 require_relative "../error"
+require_relative "../atomic_file"
 require_relative "snapshot_shape"
 
 module Relspec
@@ -19,6 +20,11 @@ module Relspec
 
       def dump(catalog)
         Yaml::Writer.dump({ FORMAT_KEY => FORMAT_VERSION }.merge(catalog.to_h))
+      end
+
+      # The snapshot of +catalog+ at +path+, replaced by rename.
+      def write(path, catalog)
+        AtomicFile.write(path, dump(catalog))
       end
 
       def snapshot?(path)

@@ -10,10 +10,11 @@ module Relspec
     # skipped.
     class BuildCommand
       def initialize(path:, out:, backend:, jobs:, targets:, keep_going:, rebuild:, prepare:, format:, out_io:,
-                     progress_io: nil)
+                     progress_io: nil, engine: "local", slurm: [], err_io: nil)
         @path = path
         @options = { out: out, backend: backend, jobs: jobs, targets: targets, keep_going: keep_going,
-                     rebuild: rebuild, prepare_only: prepare }
+                     rebuild: rebuild, prepare_only: prepare, engine: engine, notices: err_io }
+        @slurm = slurm
         @format = format
         @io = out_io
         @progress_io = progress_io
@@ -21,12 +22,21 @@ module Relspec
 
       def call
         listener = @progress_io&.tty? && @format == "text" ? BuildProgress.new(@progress_io) : nil
-        reports = Builder.run(@path, **@options, listener: listener)
+        settings = Builder::Slurm::Settings.load(user_dir: config_home, project_dir: Dir.pwd, pairs: @slurm)
+        reports = Builder.run(@path, **@options, slurm_settings: settings, listener: listener)
         @format == "json" ? @io.puts(JSON.pretty_generate(reports.map { |report| as_json(report) })) : print_text(reports)
         reports.any?(&:failed?) ? 1 : 0
       end
 
       private
+
+      # The user's configuration folder (XDG), nil without a home.
+      def config_home
+        base = ENV.fetch("XDG_CONFIG_HOME", "")
+        base.empty? ? File.join(Dir.home, ".config") : base
+      rescue ArgumentError
+        nil
+      end
 
       def print_text(reports)
         reports.each do |report|
@@ -39,8 +49,8 @@ module Relspec
       end
 
       def print_table(report)
-        rows = report.results.records.sort.map do |source, record|
-          [source, record.version.to_s, record.status, record.duration ? format("%.1f s", record.duration) : "",
+        rows = report.results.entries.map do |record|
+          [record.source, record.version.to_s, record.status, record.duration ? format("%.1f s", record.duration) : "",
            record.reason.to_s.lines.first.to_s.strip]
         end
         @io.puts("#{report.target}: #{count(report, :built)} built, #{report.reused} already built, " \
@@ -59,7 +69,7 @@ module Relspec
 
       def as_json(report)
         { "target" => report.target.to_s, "folder" => report.dir,
-          "packages" => (report.results&.records || {}).sort.to_h { |source, record| [source, record.to_h] } }
+          "packages" => (report.results&.entries || []).to_h { |record| [record.source, record.to_h] } }
       end
     end
   end

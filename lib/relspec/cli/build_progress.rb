@@ -17,7 +17,7 @@ module Relspec
         @bar&.finish
         @building.clear
         @bar = TTY::ProgressBar.new("#{target} [:bar] :current/:total :elapsed :building", total: [total, 1].max,
-                                                                                         output: @io, width: 24, clear: true)
+                                                                                           output: @io, width: 24, clear: true)
         @bar.advance(done, building: "")
       end
 

@@ -1,13 +1,15 @@
 # frozen_string_literal: true
 
 require "thor"
+require_relative "strict_commands"
 require "json"
-require_relative "../atomic_file"
 
 module Relspec
   module CLI
     # `relspec catalog …`: the package database of a workspace.
     class CatalogCommands < Thor
+      include StrictCommands
+
       namespace "catalog"
 
       def self.exit_on_failure?
@@ -27,9 +29,10 @@ module Relspec
         require_relative "../release_spec/distribution"
         require_relative "../catalog/autoproj_source"
         require_relative "../catalog/snapshot_source"
-        catalog = Catalog::AutoprojSource.load(workspace, distributions(options[:targets]))
-        text = Catalog::SnapshotSource.dump(catalog)
-        options[:output] ? AtomicFile.write(options[:output], text) : $stdout.write(text)
+        catalog = Catalog::AutoprojSource.load(workspace, ReleaseSpec::Distributions.builtin(options[:targets]))
+        return Catalog::SnapshotSource.write(options[:output], catalog) if options[:output]
+
+        $stdout.write(Catalog::SnapshotSource.dump(catalog))
       end
 
       desc "show SPEC", "List the packages of a release per target distribution"
@@ -39,31 +42,13 @@ module Relspec
         require_relative "../release_spec"
         require_relative "../catalog/release_catalog"
         release = Catalog::ReleaseCatalog.load(ReleaseSpec.resolve(path))
-        selections = release.selections
-        if options[:target]
-          unless selections.key?(options[:target])
-            raise Error, "#{options[:target]} is not a target codename of this release (#{selections.keys.join(', ')})"
-          end
-
-          selections = selections.slice(options[:target])
-        end
+        selections = release.selections_on(options[:target])
         options[:format] == "json" ? $stdout.puts(JSON.pretty_generate(as_json(release, selections))) : print_text(release, selections)
       end
 
       private
 
-      def distributions(list)
-        known = ReleaseSpec::Distributions::BUILTIN
-        return known unless list
-
-        names = list.split(",").map(&:strip)
-        unknown = names - known.keys
-        raise Error, "unknown distribution #{unknown.first.inspect} (known: #{known.keys.join(', ')})" unless unknown.empty?
-
-        known.slice(*names)
-      end
-
-      def as_json(release, selections)
+      def as_json(_release, selections)
         selections.to_h do |codename, selection|
           [codename, selection.packages.to_h { |package| [package.name, package.to_h.slice("build_type", "vcs", "commit_time", "version")] }]
         end
@@ -77,7 +62,11 @@ module Relspec
             puts format("  %-32s %-9s %-10s %s", package.name, package.build_type, commit, package.commit_time)
           end
           selection.unavailable.each do |name, reason|
-            why = reason.dependency ? "requires #{reason.dependency}" : "osdeps #{reason.osdeps.join(', ')} nonexistent"
+            why =
+              if reason.dependency then "requires #{reason.dependency}"
+              elsif reason.left_out then "left out by #{reason.left_out.pattern.source} (#{reason.left_out.reason})"
+              else "osdeps #{reason.osdeps.join(', ')} nonexistent"
+              end
             puts format("  %-32s unavailable on #{codename}: %s", name, why)
           end
         end

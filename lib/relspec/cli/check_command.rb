@@ -1,8 +1,6 @@
 # frozen_string_literal: true
 
-require_relative "../plan"
 require_relative "../availability"
-require_relative "../availability/launchpad_client"
 
 module Relspec
   module CLI
@@ -22,11 +20,8 @@ module Relspec
       end
 
       def call
-        planned = Plan.compute(@path, timeout: @timeout)
-        only = Plan::Target.select(@target, planned.plan.targets.keys, planned.plan.release)
-        client = Availability::LaunchpadClient.new(base: @launchpad_url, timeout: @timeout)
-        report = Availability.check(planned, mode: @source, launchpad: client, only: only, timeout: @timeout,
-                                             concurrency: @concurrency)
+        report = Availability.run(@path, target: @target, mode: @source, launchpad_url: @launchpad_url, timeout: @timeout,
+                                         concurrency: @concurrency)
         @out.write(report.render(@format))
         report.failed? ? 1 : 0
       end

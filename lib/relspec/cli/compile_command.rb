@@ -64,7 +64,7 @@ module Relspec
         bar = nil
         lambda do |done, total|
           bar ||= TTY::ProgressBar.new("source packages [:bar] :current/:total", total: total, output: @progress_io,
-                                                                                  width: 30, clear: true)
+                                                                                 width: 30, clear: true)
           bar.current = done
         end
       end

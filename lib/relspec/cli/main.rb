@@ -2,22 +2,33 @@
 
 require "thor"
 require_relative "checked_options"
+require_relative "strict_commands"
 require_relative "../version"
 require_relative "catalog_commands"
 require_relative "osdeps_commands"
 
 module Relspec
   module CLI
-    # The command line (DESIGN §7). Each command is a small class; this file
+    # The command line (README.md lists the commands). Each command is a small class; this file
     # only declares options and hands them over. Command classes are required
     # when their command runs, so that each command loads only what it needs.
     class Main < Thor
       include CheckedOptions
+      include StrictCommands
 
       package_name "relspec"
 
       def self.exit_on_failure?
         true
+      end
+
+      def self.command_group
+        "relspec"
+      end
+
+      # Thor's errors come out as relspec's (StrictCommands).
+      def self.start(given_args = ARGV, config = {})
+        StrictCommands.translated { super(given_args, config.merge(debug: true)) }
       end
 
       DISCARD_LOCK = "Start over when releases/<release>/lock.yml cannot be read (its build history is lost)"
@@ -148,13 +159,19 @@ module Relspec
       option :rebuild, type: :boolean, default: false, desc: "Rebuild packages an earlier run built"
       option :prepare, type: :boolean, default: false, desc: "Only make the chroot tarballs (sbuild)"
       option :format, enum: %w[text json], default: "text", desc: "Output format"
+      option :engine, enum: %w[local slurm], default: "local",
+                      desc: "local (--jobs at once here) or slurm (jobs on a Slurm cluster; docs/scale-out.md)"
+      option :slurm, type: :string, repeatable: true,
+                     desc: "A cluster setting KEY=VALUE (partition, account, time_limit, memory, cpus_per_build, " \
+                           "shared_folder, poll_interval, features.ARCH); repeatable"
       def build(path)
         require_relative "build_command"
         require_relative "build_progress"
         finish BuildCommand.new(path: path, out: options[:out], backend: options[:backend], jobs: options[:jobs],
                                 targets: options[:target], keep_going: options[:keep_going],
                                 rebuild: options[:rebuild], prepare: options[:prepare], format: options[:format],
-                                out_io: $stdout, progress_io: options[:quiet] ? nil : $stderr).call
+                                out_io: $stdout, progress_io: options[:quiet] ? nil : $stderr,
+                                engine: options[:engine], slurm: options[:slurm] || [], err_io: $stderr).call
       end
 
       desc "check SPEC", "Check that the OS dependencies of the release exist on every target"
@@ -227,10 +244,9 @@ module Relspec
       desc "catalog SUBCOMMAND", "The package database of a workspace (export, show)"
       subcommand "catalog", CatalogCommands
 
-      desc "osdeps SUBCOMMAND", "osdeps files for autoproj (render SPEC, index, select); `osdeps SPEC` renders"
+      desc "osdeps SUBCOMMAND", "osdeps files for autoproj (render SPEC, index, select, package-set); `osdeps SPEC` renders"
       subcommand "osdeps", OsdepsCommands
 
-      # `relspec osdeps SPEC` is `relspec osdeps render SPEC`.
       # Options of every command that people also write before the command
       # (`relspec --debug compile SPEC`); Thor only reads them after it.
       GLOBAL_FLAGS = %w[--debug --no-debug --quiet --no-quiet].freeze
@@ -238,10 +254,15 @@ module Relspec
       def self.normalize(argv)
         leading = argv.take_while { |arg| GLOBAL_FLAGS.include?(arg) }
         argv = argv.drop(leading.size) + leading unless leading.empty? || argv.size == leading.size
-        return argv unless argv[0] == "osdeps" && argv[1] && !argv[1].start_with?("-")
-        return argv if OsdepsCommands.all_commands.key?(argv[1]) || argv[1] == "help"
+        return argv unless argv[0] == "osdeps" && argv[1] && spec_path?(argv[1])
 
         [argv[0], "render", *argv[1..]]
+      end
+
+      # `relspec osdeps SPEC` is `relspec osdeps render SPEC`; any other word
+      # is a subcommand, refused with a hint when unknown (never a spec path).
+      def self.spec_path?(word)
+        word.match?(/\.ya?ml\z/) || word.include?("/") || File.file?(word)
       end
 
       private

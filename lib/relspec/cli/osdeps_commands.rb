@@ -1,9 +1,8 @@
 # frozen_string_literal: true
 
 require "thor"
+require_relative "strict_commands"
 require_relative "checked_options"
-require "fileutils"
-require_relative "../atomic_file"
 require_relative "../error"
 
 module Relspec
@@ -12,9 +11,9 @@ module Relspec
     # release's binaries (rock-osdeps package set format).
     class OsdepsCommands < Thor
       include CheckedOptions
+      include StrictCommands
 
       namespace "osdeps"
-
 
       def self.exit_on_failure?
         true
@@ -32,19 +31,14 @@ module Relspec
       option :timeout, type: :numeric, default: 10, desc: "HTTP timeout in seconds"
       def render(path)
         require_relative "../plan"
-        require_relative "../osdeps/renderer"
-        result = Plan.compute(path, timeout: options[:timeout])
+        require_relative "../project"
+        require_relative "../osdeps/files"
+        result = Plan.run(path, timeout: options[:timeout])
         effective = result.effective
-        present, missing = presence(result)
-        files = Osdeps::Renderer.render(result.plan, effective.distributions, present: present)
-        dir = File.join(File.dirname(result.lock_path), "osdeps")
-        FileUtils.mkdir_p(dir)
-        files.each do |arch, text|
-          target = File.join(dir, Osdeps::Renderer.file_name(effective.release, arch))
-          changed = AtomicFile.update(target, text)
-          $stderr.puts("#{changed ? 'wrote' : 'unchanged'} #{target}")
-        end
-        missing.each { |line| $stderr.puts("missing from the repository: #{line}") }
+        dir = Project.new(result.project_root).osdeps_dir(effective.release)
+        written = Osdeps::Files.write_release(result.plan, effective, dir, held_only: options[:from_repository])
+        written.written.each { |target, changed| $stderr.puts("#{changed ? 'wrote' : 'unchanged'} #{target}") }
+        written.missing.each { |line| $stderr.puts("missing from the repository: #{line}") }
       end
 
       desc "index", "Write releases/releases.yml, the release index of the rock-osdeps package set"
@@ -54,15 +48,36 @@ module Relspec
       def index
         require_relative "../release_spec"
         require_relative "../osdeps/release_index"
-        library = ReleaseSpec::Library.new(options[:specs])
-        raise Error, "#{options[:specs]}/ holds no release spec" if library.names.empty?
-
-        releases = library.paths.map { |path| ReleaseSpec.resolve(path).effective }
-        text = Osdeps::ReleaseIndex.render(releases, repo_url: options[:repo_url], public_key: options[:public_key])
-        target = File.join(File.dirname(options[:specs]), "releases", "releases.yml").delete_prefix("./")
-        FileUtils.mkdir_p(File.dirname(target))
-        $stderr.puts("#{AtomicFile.update(target, text) ? 'wrote' : 'unchanged'} #{target}")
+        require_relative "../osdeps/files"
+        require_relative "../project"
+        if options[:repo_url] && !Osdeps::IndexCheck.http?(options[:repo_url])
+          raise Error, "--repo-url must be an http(s) URL, not #{options[:repo_url].inspect}"
+        end
+        text = Osdeps::ReleaseIndex.render(indexed_releases(spec_library), repo_url: options[:repo_url],
+                                                                           public_key: options[:public_key])
+        target = Project.new(File.dirname(options[:specs])).release_index
+        $stderr.puts("#{Osdeps::Files.write_index(target, text) ? 'wrote' : 'unchanged'} #{target}")
       end
+
+      desc "package-set", "Write relspec's autoproj package set for the releases of specs/ (default: build/package-set)"
+      long_desc <<~TEXT
+        A ready autoproj package set (source.yml, init.rb, data/) for every release of
+        --specs, from their published repositories: users add it to their manifest,
+        choose a release in autoproj/relspec.yml, and autoproj installs the release's
+        binaries with apt instead of building those packages (docs/releasing.md).
+        The folder is replaced as a whole, and only when its content changes.
+      TEXT
+      option :specs, type: :string, default: "specs", desc: "The folder of release specs"
+      option :out, type: :string, default: "build/package-set", desc: "The package set's folder"
+      def package_set
+        require_relative "../release_spec"
+        require_relative "../osdeps/package_set"
+        require_relative "../osdeps/package_set_writer"
+        files = Osdeps::PackageSet.assemble(indexed_releases(spec_library))
+        changed = Osdeps::PackageSetWriter.write(options[:out], files)
+        $stderr.puts("#{changed ? 'wrote' : 'unchanged'} #{options[:out]} (#{files.size} files)")
+      end
+      map "package-set" => :package_set
 
       desc "select", "Apply a user's deb_blacklist.yml: write rock-osdeps.osdeps and rock-osdeps.inactive"
       long_desc <<~TEXT
@@ -89,14 +104,19 @@ module Relspec
 
       private
 
-      # With --from-repository, a filter keeping what the repositories hold,
-      # and the planned packages that are missing.
-      def presence(_result)
-        return [->(_target, _decision) { true }, []] unless options[:from_repository]
+      def spec_library
+        library = ReleaseSpec::Library.new(options[:specs])
+        raise Error, "#{options[:specs]}/ holds no release spec" if library.names.empty?
 
-        require_relative "../osdeps/repository_presence"
-        presence = Osdeps::RepositoryPresence.new
-        [presence.to_proc, presence.missing]
+        library
+      end
+
+      # The release index's view of every spec (Osdeps::IndexedRelease).
+      def indexed_releases(library)
+        require_relative "../osdeps/indexed_release"
+        library.paths.map do |path|
+          Osdeps::IndexedRelease.from_effective(ReleaseSpec.resolve(path).effective)
+        end
       end
     end
   end

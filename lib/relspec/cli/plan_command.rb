@@ -21,7 +21,7 @@ module Relspec
       end
 
       def call
-        result = Plan.compute(@path, timeout: @timeout, discard_lock: @discard_lock)
+        result = Plan.run(@path, timeout: @timeout, discard_lock: @discard_lock)
         DiscardedLock.warn(result, @err)
         plan = result.plan
         targets = selected_targets(plan)
@@ -34,7 +34,7 @@ module Relspec
       private
 
       def selected_targets(plan)
-        Plan::Target.select(@target, plan.targets.keys, plan.release)
+        Target.select(@target, plan.targets.keys, plan.release)
       end
 
       def render(report)

@@ -1,18 +1,11 @@
 # frozen_string_literal: true
 
-require_relative "../osdeps/operating_system"
-require_relative "../osdeps/release_data"
-require_relative "../osdeps/blacklist_file"
-require_relative "../osdeps/index_sources"
-require_relative "../osdeps/selection"
-require_relative "../yaml/writer"
-require_relative "../atomic_file"
+require_relative "../osdeps/user_selection"
 
 module Relspec
   module CLI
-    # `relspec osdeps select`: the user-side selection. Everything is read
-    # and computed before anything is written, and both files are written
-    # with rename, so a bad blacklist leaves the previous files untouched.
+    # `relspec osdeps select`: runs Osdeps::UserSelection with the options and
+    # says what it did.
     class SelectCommand
       def initialize(options, err:)
         @options = options
@@ -20,41 +13,21 @@ module Relspec
       end
 
       def call
-        os = parse_os
-        mapping = resolve(Osdeps::ReleaseData.new(@options[:data]).merged(@options[:release], @options[:arch]), os)
-        blacklist = @options[:blacklist] ? Osdeps::BlacklistFile.load(@options[:blacklist]) : []
-        indices = Osdeps::IndexSources.load(@options[:index], codename: codename(os), arch: @options[:arch],
-                                                              trusted: @options[:trusted], keyring: @options[:keyring])
-        selection = Osdeps::Selection.new(mapping, indices, blacklist)
-        selection.unmatched.each do |entry|
-          @err.puts("#{entry.location}: warning[unmatched-blacklist]: #{entry.pattern.source.inspect} matches no package " \
-                    "of #{@options[:release]}")
-        end
-        write(selection)
-      end
-
-      private
-
-      def parse_os
-        Osdeps::OperatingSystem.parse(@options[:os])
-      end
-
-      # The user's codename, to read repository URLs with.
-      def codename(os)
-        os.versions.find { |version| version.match?(/\A[a-z]+\z/) && version != "default" }
-      end
-
-      def resolve(entries, os)
-        entries.filter_map { |package, entry| (deb = os.resolve(entry)) && [package, deb] }.to_h
-      end
-
-      def write(selection)
-        osdeps = selection.active.transform_values { |deb| { "default" => deb } }
-        FileUtils.mkdir_p(@options[:output])
-        AtomicFile.write(File.join(@options[:output], "rock-osdeps.osdeps"), Yaml::Writer.dump(osdeps))
-        AtomicFile.write(File.join(@options[:output], "rock-osdeps.inactive"), Yaml::Writer.dump(selection.inactive))
-        @err.puts("#{osdeps.size} packages active, #{selection.inactive.size} disabled " \
-                  "(#{File.join(@options[:output], 'rock-osdeps.osdeps')})")
+        release = @options[:release]
+        result = Osdeps::UserSelection.call(
+          release: release, arch: @options[:arch], os: @options[:os], data: @options[:data],
+          blacklist: @options[:blacklist], index: @options[:index], trusted: @options[:trusted],
+          keyring: @options[:keyring], output: @options[:output],
+          differs: lambda do |entry, note|
+            @err.puts("#{entry.location}: warning[blacklist-reading]: #{entry.pattern.source.inspect}: #{note}")
+          end,
+          unmatched: lambda do |entry|
+            @err.puts("#{entry.location}: warning[unmatched-blacklist]: #{entry.pattern.source.inspect} matches no " \
+                      "package of #{release}")
+          end
+        )
+        selection = result.selection
+        @err.puts("#{selection.active.size} packages active, #{selection.inactive.size} disabled (#{result.path})")
       end
     end
   end

@@ -16,10 +16,8 @@ module Relspec
       end
 
       def call
-        plan = Plan.compute(@path, timeout: @timeout).plan
-        targets = plan.targets.keys.sort_by(&:to_s)
-        targets = targets.select { |target| target.to_s == @target } if @target
-        raise Error, "#{@target} is not a target of #{plan.release}" if targets.empty?
+        plan = Plan.run(@path, timeout: @timeout).plan
+        targets = Target.select(@target, plan.targets.keys.sort_by(&:to_s), plan.release)
         unless plan.packages.key?(@package)
           hint = Suggestion.hint(@package, plan.packages.keys)
           raise Error, "#{@package} is not part of release #{plan.release}#{" (#{hint})" if hint}"

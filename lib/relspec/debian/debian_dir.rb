@@ -6,6 +6,7 @@ require_relative "naming"
 require_relative "control_relations"
 require_relative "license_name"
 require_relative "build_input"
+require_relative "environment_file"
 require_relative "../yaml/writer"
 
 module Relspec
@@ -48,7 +49,8 @@ module Relspec
           "rules" => template("rules.erb", body: template("rules_#{rules_kind}.erb")),
           "source/format" => "3.0 (quilt)\n",
           "env.sh" => template("env.sh.erb"),
-          "env.yml" => Yaml::Writer.dump(environment),
+          "env.yml" => EnvironmentFile.render(environment_variables),
+          "relspec.yml" => Yaml::Writer.dump(metadata),
           "#{source}.lintian-overrides" => lintian_overrides
         }
         # debhelper-compat in Build-Depends needs debhelper 11.1.4; older ones read debian/compat
@@ -277,7 +279,7 @@ module Relspec
         url.match?(%r{\A(https?|git|ssh)://|\A[\w.-]+@[\w.-]+:}) ? url : nil
       end
 
-      # Packages of a release live under /opt by design (DESIGN §5): lintian
+      # Packages of a release live under /opt by design (docs/compile.md): lintian
       # names /opt/rock/, /opt/rock/<release>/ and every path of the prefix.
       # Their libraries are not on ld.so's path, so Rock's CMake gives
       # programs a RUNPATH to the release's prefixes (the only way they run
@@ -309,17 +311,21 @@ module Relspec
         Time.utc(*time.scan(/\d+/).map(&:to_i)).strftime("%a, %d %b %Y %H:%M:%S +0000")
       end
 
-      def environment
+      # What the package adds to the environment: one prefix, no dependency
+      # (autoproj loads the env.yml of every active package; env.sh, for a
+      # plain shell, sources its dependencies itself).
+      def environment_variables
         dir = install_dir
-        {
-          "package" => @in.package.name, "release" => @in.release, "prefix" => dir,
-          "dependencies" => dependency_dirs,
-          "prepend" => {
-            "PATH" => ["#{dir}/bin"], "LD_LIBRARY_PATH" => ["#{dir}/lib"],
-            "PKG_CONFIG_PATH" => ["#{dir}/lib/pkgconfig", "#{dir}/share/pkgconfig"], "CMAKE_PREFIX_PATH" => [dir],
-            "RUBYLIB" => ruby_lib_dirs, "GEM_PATH" => ["#{dir}/#{GEM_DIR}"]
-          }
-        }
+        { "PATH" => ["#{dir}/bin"], "LD_LIBRARY_PATH" => ["#{dir}/lib"],
+          "PKG_CONFIG_PATH" => ["#{dir}/lib/pkgconfig", "#{dir}/share/pkgconfig"], "CMAKE_PREFIX_PATH" => [dir],
+          "RUBYLIB" => ruby_lib_dirs, "GEM_PATH" => ["#{dir}/#{GEM_DIR}"] }
+      end
+
+      # relspec's own record of the package (relspec.yml in the prefix): what
+      # built it and the prefixes of its dependencies.
+      def metadata
+        { "package" => @in.package.name, "release" => @in.release, "prefix" => install_dir,
+          "dependencies" => dependency_dirs }
       end
     end
   end

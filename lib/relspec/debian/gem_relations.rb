@@ -37,6 +37,7 @@ module Relspec
         if operator == "~>"
           return ["#{deb} (>= #{GemVersion.to_debian(version)})", "#{deb} (<< #{GemVersion.to_debian(version.bump)})"]
         end
+
         debian = OPERATORS[operator]
         debian ? ["#{deb} (#{debian} #{GemVersion.to_debian(version)})"] : []
       end

@@ -3,7 +3,7 @@
 module Relspec
   module Debian
     # Debian package names of a release, compatible with the existing Rock
-    # releases (DESIGN §5): `rock-master-20.06-base-types`,
+    # releases (docs/compile.md, Names and versions): `rock-master-20.06-base-types`,
     # `rock-master-20.06-ruby-tools-orocos.rb`, `rock-master-20.06-meta-rock.core`.
     module Naming
       module_function
@@ -13,16 +13,29 @@ module Relspec
         package_name.tr("/_", "--").downcase
       end
 
-      # The name Debian gives the package of gem +gem+ (ruby-concurrent-ruby
-      # for concurrent-ruby; Debian sometimes differs, see docs/compile.md).
+      # Gems Debian does not package as ruby-<gem>: tools whose package
+      # carries the command's name, and gems whose name already says Ruby.
+      # Each is the binary package holding the gem's specification in
+      # Debian's archive (checked on bookworm and jammy; docs/compile.md).
+      IRREGULAR_GEMS = {
+        "concurrent-ruby" => "ruby-concurrent", "rake" => "rake", "rake-compiler" => "rake-compiler",
+        "thin" => "thin", "yard" => "yard"
+      }.freeze
+
+      # Every Debian name distribution_gem can give.
+      DISTRIBUTION_GEMS = /\A(?:ruby-|(?:#{IRREGULAR_GEMS.values.map { |name| Regexp.escape(name) }.join('|')})\z)/
+
       # The gem's name in an osdeps gem entry, which may carry a version
       # constraint ("rice<4.0.0").
       def gem_name(entry)
         entry[/\A[^<>=~!\s]+/]
       end
 
+      # The name Debian gives the package of gem +gem+ (an osdeps entry's
+      # constraint is not part of it): ruby-<gem> unless IRREGULAR_GEMS says otherwise.
       def distribution_gem(gem)
-        "ruby-#{canonical(gem)}"
+        name = gem_name(gem)
+        IRREGULAR_GEMS.fetch(name) { "ruby-#{canonical(name)}" }
       end
 
       # The name package +package_name+ (of +build_type+) has in release

@@ -5,7 +5,7 @@ require_relative "../error"
 
 module Relspec
   module Debian
-    # The files/ of an overlay as one quilt patch (DESIGN §12): the orig
+    # The files/ of an overlay as one quilt patch (docs/design.md, One truth for versions): the orig
     # tarball of an upstream version stays the upstream tree byte for byte,
     # and what the overlay changes travels in debian/patches like any other
     # Debian change. Each file becomes one hunk replacing the upstream file
@@ -30,7 +30,7 @@ module Relspec
         return nil if hunks.empty?
 
         "Description: files of overlays/#{package_name}/files over the upstream tree\n" \
-          "Forwarded: not-needed\n---\n".b + hunks.join.b
+        "Forwarded: not-needed\n---\n".b + hunks.join.b
       end
 
       def file_diff(path, old, new)

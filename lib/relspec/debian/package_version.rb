@@ -5,7 +5,7 @@ require_relative "gem_version"
 
 module Relspec
   module Debian
-    # The version of a package built in a release (DESIGN §5, §12): upstream
+    # The version of a package built in a release (docs/compile.md, Names and versions): upstream
     # `<manifest version or 0>.<YYYYMMDD>.<HHMMSS>` of the UTC commit time (a
     # gem's own version for gems), then `-<revision>~<codename>` so that one
     # repository can hold one build per distribution.

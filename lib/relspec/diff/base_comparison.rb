@@ -13,7 +13,8 @@ module Relspec
     # file and releases/<r>/lock.yml as they are now. A spec git sees
     # renamed is compared with its old release; a deleted spec shows its
     # release as removed, a new one as added. A new spec of the working
-    # tree without a lock yet is planned (+planner+: spec path => Plan::Lock).
+    # tree without a lock yet is planned (+planner+: spec path => Plan::Lock),
+    # and so is one whose lock is out of date (Snapshot#stale says so).
     class BaseComparison
       SPECS = "specs"
       RELEASES = "releases"
@@ -75,13 +76,26 @@ module Relspec
         raise Error, "#{shown(spec_path)} does not exist" unless File.file?(full_spec)
 
         snapshot = if File.file?(full_lock)
-                     LockView.parse(File.read(full_lock), source: shown(lock_path))
+                     current_or_planned(full_spec, full_lock, lock_path, spec_path)
                    elsif plan
                      LockView.snapshot(@planner.call(full_spec), source: shown(spec_path))
                    else
                      Snapshot.empty(name, shown(spec_path))
                    end
-        snapshot.with_spec(Input.spec_data(File.read(full_spec), shown(spec_path)), spec_dir: File.dirname(full_spec))
+        snapshot.with_spec(Input.spec_data(Input.text_of(full_spec), shown(spec_path)), spec_dir: File.dirname(full_spec))
+      end
+
+      # The working tree's lock when it is what a plan writes now; else the
+      # plan itself, marked as planned (a lock left behind by a spec edited
+      # without `plan --write`, a moved pin or a republished ancestor would
+      # make the diff say less than the truth).
+      def current_or_planned(full_spec, full_lock, lock_path, spec_path)
+        text = Input.text_of(full_lock)
+        read = LockView.parse(text, source: shown(lock_path))
+        lock = @planner.call(full_spec)
+        return read if Plan::LockGenerator.dump(lock) == text
+
+        Snapshot.new(**LockView.snapshot(lock, source: shown(spec_path)).to_h, stale: shown(lock_path)).freeze
       end
     end
   end

@@ -31,15 +31,17 @@ module Relspec
 
       def release_folder(path)
         lock = File.join(path, LOCK_FILE)
-        raise Error, "#{path} is not a release folder: it has no #{LOCK_FILE}" unless File.file?(lock)
+        raise Error, "#{path} is not a release folder: it has no #{LOCK_FILE}" unless File.exist?(lock)
 
         # No spec is attached: which spec the lock was planned from is not
         # known (the one in specs/ may be the changed one).
-        LockView.parse(File.read(lock), source: lock)
+        LockView.parse(text_of(lock), source: lock)
       end
 
       def file(path, planner)
-        text = File.read(path)
+        text = text_of(path)
+        raise Error, "#{path} is empty: neither a relspec lock nor a release spec" if text.strip.empty?
+
         # A lock is read once, by the lock parser (a lock of 400 packages
         # costs a tenth of a second per YAML read).
         return LockView.parse(text, source: path) if text.match?(LOCK_MARK)
@@ -48,6 +50,15 @@ module Relspec
         raise Error, "#{path} is neither a relspec lock nor a release spec" unless data.key?("release")
 
         LockView.snapshot(planner.call(path), source: path).with_spec(data, spec_dir: File.dirname(path))
+      end
+
+      # A file's text, read as every YAML input is (regular file, size limit,
+      # UTF-8 or UTF-16): anything else is an InvalidInput naming the file.
+      def text_of(path)
+        text, refusal = Yaml::LocatedDocument.read_text(path)
+        raise InvalidInput, [refusal] if refusal
+
+        text
       end
 
       # The spec (or lock) file's data; {} for anything that is not a mapping.

@@ -35,6 +35,7 @@ module Relspec
 
       def summary(diff)
         lines = ["### #{diff.release}#{" (#{diff.status})" unless diff.status == 'changed'}", ""]
+        lines << sides(diff) << "" if diff.old.stale || diff.new.stale
         diff.targets.select(&:changed?).each { |target| lines << "- **#{target.target}**: #{target.headline.split(': ', 2).last}" }
         lines << "- #{diff.rebuilds} new build#{'s' unless diff.rebuilds == 1} in all" if diff.targets.count(&:changed?) > 1
         unless diff.spec_changes.empty?
@@ -52,6 +53,15 @@ module Relspec
         end
         lines << ""
         lines.join("\n")
+      end
+
+      # Which side was planned (its lock out of date) and which was read.
+      def sides(diff)
+        [["old", diff.old], ["new", diff.new]].map do |name, side|
+          next "#{name}: planned from `#{side.source}` (`#{side.stale}` is out of date: run `relspec plan --write`)" if side.stale
+
+          "#{name}: read from `#{side.source}`"
+        end.join("; ").then { |text| "_#{text.sub(/\Ao/, 'O')}_" }
       end
 
       def code_subject(change)

@@ -36,7 +36,13 @@ module Relspec
           (before.keys | after.keys).sort.filter_map do |codename|
             next if before[codename] == after[codename]
 
-            change = if !before.key?(codename) then "added" elsif !after.key?(codename) then "removed" else "changed" end
+            change = if !before.key?(codename)
+                       "added"
+                     elsif !after.key?(codename)
+                       "removed"
+                     else
+                       "changed"
+                     end
             AncestorChange.new(ancestor: ancestor, codename: codename, change: change,
                                packages: followed(ancestor, codename, targets)).freeze
           end
@@ -109,9 +115,14 @@ module Relspec
         "#{decision.root_package(package)} is #{root}"
       end
 
+      # +stale_lock+ only when the side was planned because its lock was out of date.
+      def side(snapshot)
+        { "release" => snapshot.release, "source" => snapshot.source, "stale_lock" => snapshot.stale }.compact
+      end
+
       def to_h
         { "release" => release, "status" => status,
-          "old" => { "release" => old.release, "source" => old.source }, "new" => { "release" => new.release, "source" => new.source },
+          "old" => side(old), "new" => side(new),
           "rebuilds" => rebuilds, "spec_changes" => spec_changes.map(&:to_h), "ancestors" => ancestors.map(&:to_h),
           "targets" => targets.select(&:changed?).map(&:to_h) }
       end

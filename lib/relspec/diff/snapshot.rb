@@ -43,8 +43,10 @@ module Relspec
     # target ("codename/arch") package => Decision, and the spec file's own
     # data (+spec+, nil when not known) for spec-level changes; +workspace+:
     # the autoproj workspace of a spec read from disk (where the sources'
-    # git repositories are, to count commits), nil otherwise.
-    Snapshot = Struct.new(:release, :source, :spec_digest, :ancestors, :packages, :targets, :spec, :workspace,
+    # git repositories are, to count commits), nil otherwise; +stale+: the
+    # lock this side would have been read from, when it was out of date and
+    # the side was planned instead (nil: read from +source+ as it is).
+    Snapshot = Struct.new(:release, :source, :spec_digest, :ancestors, :packages, :targets, :spec, :workspace, :stale,
                           keyword_init: true) do
       def self.empty(release, source)
         new(release: release, source: source, spec_digest: nil, ancestors: {}, packages: {}, targets: {}, spec: nil).freeze

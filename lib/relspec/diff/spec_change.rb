@@ -12,12 +12,13 @@ module Relspec
       def to_s
         what = case key
                when "blacklist" then "blacklist entry #{subject}"
+               when "leave_out" then "leave_out entry #{subject}"
                when "pins" then "pin of #{subject}"
                when "targets" then "target #{subject}"
                else key
                end
         values = [old, new].compact
-        detail = if change == "added" || change == "removed" then values.empty? ? "" : " (#{values.join})"
+        detail = if %w[added removed].include?(change) then values.empty? ? "" : " (#{values.join})"
                  else " (#{old || 'none'} → #{new || 'none'})"
                  end
         "#{what} #{change}#{detail}"

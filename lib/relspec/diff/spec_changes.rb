@@ -9,7 +9,7 @@ module Relspec
     # parent, anything else), each linked to the decision changes it caused.
     module SpecChanges
       # Keys compared entry by entry; the others are compared whole.
-      DETAILED = %w[blacklist pins targets parent release].freeze
+      DETAILED = %w[blacklist leave_out pins targets parent release].freeze
 
       module_function
 
@@ -18,7 +18,7 @@ module Relspec
       def compare(old, new, targets)
         return [] unless old.is_a?(Hash) && new.is_a?(Hash)
 
-        changes = release(old, new) + blacklist(old, new) + pins(old, new) + target_keys(old, new) + parent(old, new) +
+        changes = release(old, new) + matches("blacklist", old, new) + matches("leave_out", old, new) + pins(old, new) + target_keys(old, new) + parent(old, new) +
                   others(old, new)
         changes.map { |change| SpecChange.new(**change, decisions: linked(change, targets)).freeze }
       end
@@ -30,17 +30,24 @@ module Relspec
         [{ key: "release", change: "changed", subject: nil, old: text(old["release"]), new: text(new["release"]) }]
       end
 
-      def blacklist(old, new)
-        before = entries(old["blacklist"])
-        after = entries(new["blacklist"])
+      # Entries of a list of {match, reason} (blacklist, leave_out), by match.
+      def matches(key, old, new)
+        before = entries(old[key])
+        after = entries(new[key])
         (before.keys | after.keys).sort.filter_map do |match|
           a = before[match]
           b = after[match]
           next if a == b
 
-          change = if a.nil? then "added" elsif b.nil? then "removed" else "changed" end
+          change = if a.nil?
+                     "added"
+                   elsif b.nil?
+                     "removed"
+                   else
+                     "changed"
+                   end
           reason = ->(entry) { entry && entry["reason"] ? entry["reason"].to_s : nil }
-          { key: "blacklist", change: change, subject: match, old: (reason.call(a) unless change == "added"),
+          { key: key, change: change, subject: match, old: (reason.call(a) unless change == "added"),
             new: (reason.call(b) unless change == "removed") }
         end
       end
@@ -55,7 +62,13 @@ module Relspec
         (before.keys | after.keys).sort.filter_map do |package|
           next if before[package] == after[package]
 
-          change = if !before.key?(package) then "added" elsif !after.key?(package) then "removed" else "moved" end
+          change = if !before.key?(package)
+                     "added"
+                   elsif !after.key?(package)
+                     "removed"
+                   else
+                     "moved"
+                   end
           { key: "pins", change: change, subject: package, old: pin_text(before[package]), new: pin_text(after[package]) }
         end
       end
@@ -110,7 +123,8 @@ module Relspec
 
       def explains?(change, target, package_change)
         case change[:key]
-        when "blacklist" then blacklisted_by?(package_change, change[:subject])
+        when "blacklist" then caused_by?(package_change, "blacklisted by \"#{change[:subject]}\"")
+        when "leave_out" then caused_by?(package_change, "left out by \"#{change[:subject]}\"")
         when "pins" then [package_change.old, package_change.new].compact.any? do |decision|
           decision.root_package(package_change.package) == change[:subject] && root_pinned?(decision)
         end || package_change.package == change[:subject]
@@ -120,9 +134,9 @@ module Relspec
         end
       end
 
-      def blacklisted_by?(package_change, match)
+      def caused_by?(package_change, cause)
         [package_change.old, package_change.new].compact.any? do |decision|
-          decision.root_cause.to_s.start_with?("blacklisted by \"#{match}\"")
+          decision.root_cause.to_s.start_with?(cause)
         end
       end
 

@@ -46,8 +46,14 @@ module Relspec
         lines
       end
 
+      def side(snapshot)
+        snapshot.stale ? "#{snapshot.source} (planned: #{snapshot.stale} is out of date)" : snapshot.source
+      end
+
       def heading(diff)
-        sources = diff.old.source == diff.new.source ? diff.new.source : "#{diff.old.source} → #{diff.new.source}"
+        old = side(diff.old)
+        new = side(diff.new)
+        sources = old == new ? new : "#{old} → #{new}"
         diff.status == "changed" ? sources : "#{diff.status} (#{sources})"
       end
 

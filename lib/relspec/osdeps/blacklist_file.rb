@@ -1,14 +1,15 @@
 # frozen_string_literal: true
 
 require_relative "../yaml/located_document"
-require_relative "../release_spec/package_pattern"
+require_relative "blacklist_reading"
 require_relative "../diagnostic"
 require_relative "../error"
 
 module Relspec
   module Osdeps
     # A user's autoproj/deb_blacklist.yml: a list of autoproj package names,
-    # globs or /regex/ whose Debian packages must not be used.
+    # globs or /regex/ (or the package set's unanchored regular expressions,
+    # BlacklistReading) whose Debian packages must not be used.
     module BlacklistFile
       Entry = Struct.new(:pattern, :location)
 
@@ -33,7 +34,7 @@ module Relspec
             problems << Diagnostic.error("wrong-type", "a blacklist entry must be a name or a pattern", location: location)
             next
           end
-          parsed = ReleaseSpec::PackagePattern.parse(item)
+          parsed = BlacklistReading.parse(item)
           if parsed.is_a?(ReleaseSpec::PackagePattern::Invalid)
             problems << Diagnostic.error(parsed.rule, parsed.message, location: location, hint: parsed.hint)
             next

@@ -24,10 +24,10 @@ module Relspec
         return nil unless entry.is_a?(Hash)
 
         entry.each do |type_key, by_labels|
-          next unless (type_key.to_s.split(",") & names).any? && by_labels.is_a?(Hash)
+          next unless type_key.to_s.split(",").intersect?(names) && by_labels.is_a?(Hash)
 
           by_labels.each do |labels_key, deb|
-            return deb if (labels_key.to_s.split(",") & versions).any?
+            return deb if labels_key.to_s.split(",").intersect?(versions)
           end
         end
         nil

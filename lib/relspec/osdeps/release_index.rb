@@ -1,6 +1,9 @@
 # frozen_string_literal: true
 
 require_relative "../yaml/writer"
+require_relative "../error"
+require_relative "index_check"
+require_relative "indexed_release"
 
 module Relspec
   module Osdeps
@@ -11,37 +14,35 @@ module Relspec
     module ReleaseIndex
       module_function
 
-      # +releases+: EffectiveSpec of every release in specs/, +repo_url+ and
-      # +public_key+: the defaults (repo_url defaults to the folder most
-      # release URLs share).
+      # +releases+: IndexedRelease of every release in specs/, +repo_url+
+      # and +public_key+: the defaults (repo_url defaults to the folder most
+      # release URLs share). Raises InvalidInput for a release the index
+      # cannot express (IndexCheck).
       def render(releases, repo_url: nil, public_key: nil)
-        repo_url ||= common_base(releases)
-        separate = majority(releases.map { |spec| spec["separate_prefixes"] != false })
+        problems = IndexCheck.problems(releases)
+        raise InvalidInput, problems unless problems.empty?
+
+        repo_url = repo_url&.chomp("/") || common_base(releases)
+        separate = majority(releases.map(&:separate_prefixes))
         index = { "default" => { "repo_url" => repo_url, "public_key" => public_key,
                                  "separate_prefixes" => separate }.compact }
-        releases.sort_by(&:release).each do |spec|
-          index[spec.release] = entry(spec, repo_url, separate)
+        releases.sort_by(&:name).each do |release|
+          index[release.name] = entry(release, repo_url, separate)
         end
         Yaml::Writer.dump(index)
       end
 
-      def entry(spec, repo_url, separate)
+      def entry(release, repo_url, separate)
         entry = {}
-        parent = Array(spec["parent"]).first
-        entry["depends_on"] = parent if parent
-        entry["separate_prefixes"] = spec["separate_prefixes"] != false if (spec["separate_prefixes"] != false) != separate
-        url = release_url(spec)
-        entry["repo_url"] = File.dirname(url) if url && repo_url && File.dirname(url) != repo_url
+        entry["depends_on"] = release.parents.first unless release.parents.empty?
+        entry["separate_prefixes"] = release.separate_prefixes if release.separate_prefixes != separate
+        base = File.dirname(release.url)
+        entry["repo_url"] = base if base != repo_url
         entry.empty? ? nil : entry
       end
 
-      def release_url(spec)
-        spec["repository"]&.fetch("url", nil)&.chomp("/")
-      end
-
       def common_base(releases)
-        bases = releases.filter_map { |spec| release_url(spec) && File.dirname(release_url(spec)) }
-        bases.tally.max_by { |base, count| [count, base] }&.first
+        releases.map { |release| File.dirname(release.url) }.tally.max_by { |base, count| [count, base] }&.first
       end
 
       def majority(values)

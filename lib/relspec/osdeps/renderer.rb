@@ -5,7 +5,7 @@ require_relative "../yaml/writer"
 module Relspec
   module Osdeps
     # Renders a release's osdeps files in the rock-osdeps package set format
-    # (DESIGN §6): one file per architecture mapping every autoproj package
+    # (docs/osdeps.md): one file per architecture mapping every autoproj package
     # the release provides — built here or inherited, under the Debian name
     # of the release that holds it — to its Debian package, keyed by
     # distribution type ("ubuntu,debian" / "debian") and labels.

@@ -2,6 +2,7 @@
 
 require_relative "../apt/repository"
 require_relative "../apt/host_lists"
+require_relative "../release_spec/values/repository_entry"
 
 module Relspec
   module Plan
@@ -35,21 +36,22 @@ module Relspec
       def declared(resolution, fetcher_options, cache)
         effective = resolution.effective
         spec_file = resolution.spec_file
-        repository = effective["repository"]
+        repository = effective.repository
         location = spec_file.key_location(repository ? ["repository"] : ["release"])
-        Ancestor.new(name: effective.release, package_prefix: effective["package_prefix"],
-                     repository: repository && reader(repository, File.dirname(spec_file.path), fetcher_options, cache),
-                     targets: effective.targets, location: location, install_prefix: effective["install_prefix"],
-                     separate_prefixes: effective["separate_prefixes"] != false).freeze
+        prefixes = effective.prefixes
+        Ancestor.new(name: effective.release, package_prefix: prefixes.package_prefix,
+                     repository: repository && reader(repository, repository.location, fetcher_options, cache),
+                     targets: effective.targets, location: location, install_prefix: prefixes.install_prefix,
+                     separate_prefixes: prefixes.separate_prefixes).freeze
       end
 
       def external(release, fetcher_options, cache)
-        entry = %w[path url keyring trusted].to_h { |key| [key, release.value(key)] }.compact
-        Ancestor.new(name: release.name, package_prefix: release.value("package_prefix") || "rock",
-                     repository: reader(entry, File.dirname(release.declared_in.path), fetcher_options, cache),
+        repository = release.repository
+        prefixes = release.prefixes
+        Ancestor.new(name: release.name, package_prefix: prefixes.package_prefix,
+                     repository: reader(repository, repository.location, fetcher_options, cache),
                      targets: release.value("targets"), location: release.location,
-                     install_prefix: release.value("install_prefix") || "/opt/rock",
-                     separate_prefixes: release.value("separate_prefixes") != false).freeze
+                     install_prefix: prefixes.install_prefix, separate_prefixes: prefixes.separate_prefixes).freeze
       end
 
       # A distribution's archive entry as a reader: this machine's apt lists
@@ -57,18 +59,15 @@ module Relspec
       def archive_reader(archive, base, fetcher_options, cache)
         return Apt::HostLists.new if archive["host"] == true
 
-        reader(archive, base, fetcher_options, cache)
+        entry = ReleaseSpec::RepositoryEntry.from(archive, base: base)
+        reader(entry, entry.location, fetcher_options, cache)
       end
 
-      # A repository entry ({path, url, keyring, trusted}) as a reader; the
-      # local path is preferred when it exists. Relative paths are relative
-      # to the spec file's folder.
-      def reader(entry, base, fetcher_options, cache)
-        path = entry["path"] && File.expand_path(entry["path"], base)
-        location = path && (File.directory?(path) || !entry["url"]) ? path : entry["url"]
-        keyring = entry["keyring"] && File.expand_path(entry["keyring"], base)
-        Apt::Repository.new(Apt::Fetcher.new(location, **fetcher_options), keyring: keyring,
-                                                                            trusted: entry["trusted"] == true, cache: cache)
+      # A ReleaseSpec::RepositoryEntry read at +location+ (one of its
+      # locations) as an Apt::Repository.
+      def reader(entry, location, fetcher_options, cache)
+        Apt::Repository.new(Apt::Fetcher.new(location, **fetcher_options), keyring: entry.keyring,
+                                                                           trusted: entry.trusted, cache: cache)
       end
     end
   end

@@ -40,6 +40,10 @@ module Relspec
                                  "nonexistent on #{codename}", nil)
       end
 
+      def self.left_out(match, reason)
+        new(:left_out, "\"#{match}\" (#{reason})", nil)
+      end
+
       def self.unavailable_dependency(package, cause)
         new(:unavailable_dependency, package, cause)
       end
@@ -70,6 +74,7 @@ module Relspec
         when :gem_version then "gem version #{detail}"
         when :depends_on then "depends on #{detail}, which is rebuilt because #{because}"
         when :nonexistent_osdeps then detail
+        when :left_out then "left out by #{detail}"
         when :unavailable_dependency then "depends on #{detail}, which is unavailable because #{because}"
         end
       end

@@ -2,6 +2,7 @@
 
 require_relative "../debian/control_relations"
 require_relative "../debian/build_input"
+require_relative "../release_spec/values/prefixes"
 
 module Relspec
   module Plan
@@ -27,7 +28,7 @@ module Relspec
         os = package.os_dependencies_for(target.codename)
         Debian::BuildInput.new(
           package: package, deb_name: decision.deb_name, upstream: upstream, codename: target.codename,
-          release: @effective.release, maintainer: @effective["maintainer"], install_dir: install_dir_of(decision),
+          release: @effective.release, maintainer: @effective.maintainer, install_dir: install_dir_of(decision),
           debhelper_compat: @effective.distributions.fetch(target.codename).debhelper_compat,
           dependencies: dependencies_of(package, decisions), apt: os.apt,
           gems: Debian::ControlRelations.distribution_gems(os, @release_catalog.gems.keys),
@@ -57,8 +58,8 @@ module Relspec
           ancestor = @ancestors.fetch(decision.ancestor)
           prefix_dir(ancestor.install_prefix, ancestor.name, ancestor.separate_prefixes, decision.deb_name)
         else
-          prefix_dir(@effective["install_prefix"], @effective.release, @effective["separate_prefixes"] != false,
-                     decision.deb_name)
+          prefixes = @effective.prefixes
+          prefix_dir(prefixes.install_prefix, @effective.release, prefixes.separate_prefixes, decision.deb_name)
         end
       end
 
@@ -71,8 +72,8 @@ module Relspec
       end
 
       def prefix_dir(install_prefix, release, separate, deb_name)
-        base = File.join(install_prefix, release)
-        separate ? File.join(base, deb_name) : base
+        ReleaseSpec::Prefixes.new(install_prefix: install_prefix, separate_prefixes: separate, package_prefix: nil)
+                             .install_dir(release, deb_name)
       end
     end
   end

@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require_relative "ancestor"
+require_relative "../apt/dependency"
 require_relative "../apt/repository"
 require_relative "../apt/version"
 require_relative "../diagnostic"
@@ -41,20 +42,47 @@ module Relspec
         new(found, targets.reject { |target| found.key?(target) || gaps.key?(target) }, gaps)
       end
 
-      # Newest version of each wanted name over the archive's components.
+      # Newest version of each wanted name over the archive's components,
+      # from the packages of that name and from versioned Provides: Ruby's
+      # default gems are ruby-<gem> virtual packages of libruby<version>
+      # ("Provides: ruby-date (= 3.2.2)" on bookworm).
       def self.versions(repository, archive, target, wanted)
         (archive["components"] || ["main"]).each_with_object({}) do |component, out|
           index = repository.packages(target.codename, target.arch, component: component)
           names = wanted.is_a?(Regexp) ? index.names.grep(wanted) : wanted
-          names.each do |name|
-            entry = index[name]
-            next unless entry && (out[name].nil? || Apt::Version.parse(entry.version) > Apt::Version.parse(out[name]))
-
-            out[name] = entry.version
-          end
+          names.each { |name| newest(out, name, index[name]&.version) }
+          provided(index, wanted) { |name, version| newest(out, name, version) }
         end
       end
       private_class_method :versions
+
+      def self.newest(out, name, version)
+        out[name] = version if version && (out[name].nil? || Apt::Version.parse(version) > Apt::Version.parse(out[name]))
+      end
+      private_class_method :newest
+
+      # The wanted names some package provides at a version.
+      def self.provided(index, wanted)
+        index.names.each do |package|
+          field = index[package].provides
+          next unless field&.include?("=")
+
+          relations(field).each do |relation|
+            next unless relation.operator == "=" && (wanted.is_a?(Regexp) ? wanted.match?(relation.name) : wanted.include?(relation.name))
+
+            yield relation.name, relation.version
+          end
+        end
+      end
+      private_class_method :provided
+
+      # A Provides field this reader cannot parse provides nothing it asks about.
+      def self.relations(field)
+        Apt::Dependency.parse(field).flatten
+      rescue ArgumentError
+        []
+      end
+      private_class_method :relations
 
       attr_reader :unknown, :gaps
 

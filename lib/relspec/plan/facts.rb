@@ -11,9 +11,10 @@ module Relspec
     # +distribution+: DistributionPackages (the targets' ruby-* packages);
     # +own+: OwnRepository (what the release's repository holds);
     # +previous+: the Lock read (nil: none, or discarded); +lock_path+: where
-    # the lock is written; +overlays+: callable (package name, arch) →
+    # the lock is written; +project_root+: where specs/, releases/ and
+    # overlays/ are; +overlays+: callable (package name, arch) →
     # Debian::Overlay.
     Facts = Struct.new(:resolution, :release_catalog, :ancestors, :inventory, :distribution, :own, :previous,
-                       :lock_path, :overlays, keyword_init: true)
+                       :lock_path, :project_root, :overlays, keyword_init: true)
   end
 end

@@ -3,11 +3,12 @@
 require "digest"
 require "json"
 require_relative "history"
+require_relative "../project"
 require_relative "cause"
 
 module Relspec
   module Plan
-    # releases/<release>/lock.yml (DESIGN §6, §12) as a value: what a plan
+    # releases/<release>/lock.yml (docs/plan.md, The lock file) as a value: what a plan
     # decided, what it read to decide it, and the history of every build the
     # release has made. LockGenerator writes it and LockParser reads it back,
     # each the mirror of the other (as Bundler's LockfileGenerator and
@@ -100,7 +101,7 @@ module Relspec
       private_class_method :entry_of, :history_with, :ancestors_of
 
       def self.path(root, release)
-        root == "." ? File.join("releases", release, "lock.yml") : File.join(root, "releases", release, "lock.yml")
+        Project.new(root).lock_path(release)
       end
 
       # The digest of what the spec means (its effective values), so a lock

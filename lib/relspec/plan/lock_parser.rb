@@ -61,7 +61,7 @@ module Relspec
 
       def lock
         unless @document.ok?
-          raise LockError, @document.diagnostics.select(&:error?).map { |d| Diagnostic.error("lock", d.message, location: d.location, hint: DISCARD_HINT) }
+          raise(LockError, @document.diagnostics.select(&:error?).map { |d| Diagnostic.error("lock", d.message, location: d.location, hint: DISCARD_HINT) })
         end
 
         data = @document.data
@@ -71,6 +71,11 @@ module Relspec
           fail_at([Lock::FORMAT_KEY], "unknown lock format #{format.inspect} (this relspec reads 1 and #{Lock::FORMAT_VERSION})")
         end
         known_keys(data, [], ROOT_KEYS)
+        # LockGenerator writes every section of format 2: one missing means
+        # the file was cut short, and reading it as "no targets" would
+        # show a diff or a plan less than the truth.
+        missing = format == Lock::FORMAT_VERSION ? ROOT_KEYS - data.keys : []
+        fail_at([], "the lock has no #{missing.first}: section (cut short?)") unless missing.empty?
         release = string(data, ["release"])
         fail_at(["release"], "the lock is of release #{release}, not #{@release}") if @release && release != @release
 
@@ -156,6 +161,7 @@ module Relspec
       # +value+ (at +path+) as a Hash; a missing top-level section is empty.
       def mapping(value, path)
         return {} if value.nil? && path.size == 1
+
         fail_at(path, "#{describe(path)} must be a mapping") unless value.is_a?(Hash)
 
         value
@@ -170,8 +176,7 @@ module Relspec
         value = hash[path.last]
         fail_at(path, "#{describe(path)} must be text") unless value.is_a?(String) || value.is_a?(Integer) || value.is_a?(Float)
 
-        value = @document.raw(path) || value.to_s
-        value
+        @document.raw(path) || value.to_s
       end
 
       def optional_string(hash, path)
@@ -181,6 +186,7 @@ module Relspec
       def strings(hash, path)
         list = hash[path.last]
         return [] if list.nil?
+
         fail_at(path, "#{describe(path)} must be a list of text") unless list.is_a?(Array) && list.all?(String)
 
         list

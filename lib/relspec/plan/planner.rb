@@ -17,7 +17,7 @@ module Relspec
   module Plan
     # Decides, for every target and every package of the release, whether it
     # is inherited from an ancestor, already published here, or built here,
-    # and why (DESIGN §4, §5):
+    # and why (docs/plan.md):
     #
     # - a package is built when it is blacklisted, pinned to a commit no
     #   ancestor has, missing in all ancestors, or when no ancestor has the
@@ -111,6 +111,8 @@ module Relspec
             reason = reasons.fetch(name)
             if reason.dependency
               Cause.unavailable_dependency(reason.dependency, cause_of.call(reason.dependency))
+            elsif reason.left_out
+              Cause.left_out(reason.left_out.pattern.source, reason.left_out.reason)
             else
               Cause.nonexistent_osdeps(reason.osdeps, target.codename)
             end
@@ -145,10 +147,11 @@ module Relspec
       end
 
       def pin_cause(package, providers)
-        pin = (@effective["pins"] || {})[package.name]
+        pin = @effective.pins[package.name]
         return nil unless pin
 
-        ref, value = pin.first
+        ref = pin.ref
+        value = pin.value
         label = ref == "commit" ? nil : "#{ref} #{value}"
         ours = upstream(package)
         nearest = providers.first
@@ -204,8 +207,8 @@ module Relspec
         end
       end
 
-      def built(package, target, cause)
-        deb = deb_name(package, @effective["package_prefix"], @effective.release)
+      def built(package, _target, cause)
+        deb = deb_name(package, @effective.prefixes.package_prefix, @effective.release)
         unless upstream(package)
           raise InvalidInput, [Diagnostic.error("unknown-commit-time",
                                                 "cannot version #{package.name}: the time of its commit is unknown",
@@ -287,17 +290,15 @@ module Relspec
       # [pattern, reason, index] for each blacklist entry; an entry that
       # matches no package of the workspace is an error.
       def blacklist_patterns
-        entries = (@effective["blacklist"] || []).each_with_index.map do |entry, index|
-          [ReleaseSpec::PackagePattern.parse(entry["match"]), entry["reason"], index]
-        end
+        entries = @effective.blacklist.map { |entry| [entry.pattern, entry.reason, entry.index] }
         unmatched = entries.reject { |pattern, _, _| @catalog.packages.keys.any? { |name| pattern.match?(name) } }
         unless unmatched.empty?
-          raise InvalidInput, unmatched.map { |pattern, _, index|
+          raise(InvalidInput, unmatched.map do |pattern, _, index|
             Diagnostic.error("unmatched-blacklist", "blacklist entry #{pattern.source.inspect} matches no package " \
                                                     "of the workspace",
                              location: @spec_file.location(["blacklist", index]),
                              hint: "check the name, or remove the entry")
-          }
+          end)
         end
         entries
       end

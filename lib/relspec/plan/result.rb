@@ -10,13 +10,14 @@ module Relspec
     # few facts of what was read that the next stages need, each behind a
     # method that says what it is for. Immutable.
     class Result
-      attr_reader :plan, :lock, :lock_path
+      attr_reader :plan, :lock, :lock_path, :project_root
 
       # +resolution+: the release's ReleaseSpec::Resolution;
       # +release_catalog+: Catalog::ReleaseCatalog; +work+: Target =>
       # {package => Settlement::Work} for the builds (what compile emits);
-      # +lock_read+: whether the plan started from the lock's history.
-      def initialize(resolution:, release_catalog:, plan:, lock:, lock_path:, work:, lock_read:)
+      # +lock_read+: whether the plan started from the lock's history;
+      # +project_root+: where specs/, releases/ and overlays/ are (Project).
+      def initialize(resolution:, release_catalog:, plan:, lock:, lock_path:, work:, lock_read:, project_root:)
         @resolution = resolution
         @release_catalog = release_catalog
         @plan = plan
@@ -24,6 +25,7 @@ module Relspec
         @lock_path = lock_path
         @work = work
         @lock_read = lock_read
+        @project_root = project_root
         freeze
       end
 

@@ -13,7 +13,7 @@ module Relspec
     # dependencies first: a package's debian/ names the versions of its
     # dependencies, so their revisions must be known before its own digest
     # is. This runs during planning, so plan, why, compile, osdeps and the
-    # builder all read the same versions (DESIGN §12).
+    # builder all read the same versions (docs/design.md, One truth for versions).
     class Settlement
       # What compile needs to emit one build: the DebianDir +input+, the
       # +overlay+ and the +digest+ of debian/ the version was settled from.
@@ -58,8 +58,8 @@ module Relspec
         result = @versioning.settle(target: target, package: package.name, deb_name: decision.deb_name,
                                     upstream: upstream, digest: digest)
         final = Decision.new(**decision.each_pair.to_h, kind: result.published ? :published : :build,
-                             version: result.version, debian_digest: digest,
-                             depends: @inputs.dependency_names(package, decisions).uniq.sort.freeze)
+                                                        version: result.version, debian_digest: digest,
+                                                        depends: @inputs.dependency_names(package, decisions).uniq.sort.freeze)
                         .freeze
         [final, Work.new(input: input, overlay: overlay, digest: digest).freeze]
       end

@@ -6,7 +6,7 @@ require_relative "../debian/package_version"
 module Relspec
   module Plan
     # The one place that decides the version of a package built here and
-    # whether the release's repository already holds it (DESIGN §12).
+    # whether the release's repository already holds it (docs/design.md, One truth for versions).
     #
     # The revision starts at 1 for a new upstream version and goes up when
     # debian/ changes for the same upstream version. The history (from the
@@ -31,10 +31,8 @@ module Relspec
         revision = revision_from(recorded, digest)
         vouched = recorded && recorded.revision == revision && recorded.debian_digest == digest
         held = Debian::PackageVersion.parse(@own.version_of(deb_name, target))
-        if held && held.upstream == upstream && held.codename == target.codename
-          if held.revision > revision || (held.revision == revision && !vouched)
-            revision = held.revision + 1
-          end
+        if held && held.upstream == upstream && held.codename == target.codename && (held.revision > revision || (held.revision == revision && !vouched))
+          revision = held.revision + 1
         end
         version = Debian::PackageVersion.new(upstream, revision, target.codename)
         Settled.new(version: version, published: vouched && version.same_as?(@own.version_of(deb_name, target))).freeze

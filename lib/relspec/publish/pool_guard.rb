@@ -6,7 +6,7 @@ require_relative "../error"
 module Relspec
   module Publish
     # A repository must never receive two different files under one name
-    # (DESIGN §5): apt clients that saw the first would fail their checksum
+    # (docs/design.md, One truth for versions): apt clients that saw the first would fail their checksum
     # on the second. reprepro refuses too, but only in the middle of a batch;
     # this check refuses the whole publication before anything is included,
     # and names both files.

@@ -13,7 +13,7 @@ module Relspec
       # a second line of defence, for reprepro runs started by hand.
       WAIT_FOR_LOCK = 30
 
-      # +targets+: Plan::Target; +sign_with+: a gpg key id, or nil (unsigned).
+      # +targets+: Target; +sign_with+: a gpg key id, or nil (unsigned).
       def initialize(release:, targets:, sign_with: nil)
         @release = release
         @targets = targets

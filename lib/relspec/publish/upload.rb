@@ -17,7 +17,7 @@ module Relspec
 
       attr_reader :source, :version, :dsc, :debs
 
-      # +entry+: a BuildResults::Entry (built); +target_dir+: the target's
+      # +entry+: a Builder::BuildResults::Record (built); +target_dir+: the target's
       # folder of <out>, where compile and build wrote.
       def self.of(entry, target_dir, results_path)
         new(entry, target_dir, results_path).tap(&:verify)

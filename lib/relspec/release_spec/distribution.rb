@@ -1,5 +1,7 @@
 # frozen_string_literal: true
 
+require_relative "../error"
+
 module Relspec
   module ReleaseSpec
     # A target distribution as autoproj's osdeps name it: a type (ubuntu
@@ -63,6 +65,19 @@ module Relspec
         Distribution.define("bookworm", "debian", %w[12 bookworm default], debhelper_compat: 13, ruby: "3.1")
       ].to_h { |d| [d.codename, d] }.freeze
 
+      # The built-ins named in +list+ ("bionic,buster"; nil: all of them); an
+      # unknown name is an InvalidOption.
+      def self.builtin(list)
+        return BUILTIN unless list
+
+        names = list.split(",").map(&:strip)
+        unknown = names - BUILTIN.keys
+        raise InvalidOption, "unknown distribution #{unknown.first.inspect} (known: #{BUILTIN.keys.join(', ')})" \
+          unless unknown.empty?
+
+        BUILTIN.slice(*names)
+      end
+
       # Built-ins overlaid with a spec's own definitions ({codename =>
       # {"type", "labels", "archive"}}); a built-in keeps what an override leaves out.
       def self.with_overrides(definitions)
@@ -70,7 +85,7 @@ module Relspec
           known = BUILTIN[codename]
           [codename, Distribution.define(codename, definition["type"] || known&.type,
                                          definition["labels"] || known&.labels || [], archive: definition["archive"],
-                                         debhelper_compat: definition["debhelper_compat"] || known&.debhelper_compat ||
+                                                                                      debhelper_compat: definition["debhelper_compat"] || known&.debhelper_compat ||
                                                            DEFAULT_DEBHELPER_COMPAT, ruby: known&.ruby)]
         end
         BUILTIN.merge(own).freeze

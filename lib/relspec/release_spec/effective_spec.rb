@@ -1,6 +1,11 @@
 # frozen_string_literal: true
 
 require_relative "distribution"
+require_relative "defaults"
+require_relative "values/repository_entry"
+require_relative "values/blacklist_entry"
+require_relative "values/pin"
+require_relative "values/prefixes"
 
 module Relspec
   module ReleaseSpec
@@ -9,7 +14,7 @@ module Relspec
     class EffectiveSpec
       # Key order of `relspec show`: identity, lineage, content, packaging.
       KEYS = %w[
-        release description parent ancestors workspace select blacklist pins gems gem_source targets
+        release description parent ancestors workspace select blacklist leave_out pins gems gem_source targets
         repository install_prefix separate_prefixes package_prefix maintainer external distributions
       ].freeze
 
@@ -37,6 +42,57 @@ module Relspec
 
       def targets
         values["targets"] || {}
+      end
+
+      # The typed values below are what the pipeline reads; the raw mapping
+      # ([] and to_h) is for show, diff and the rules.
+
+      # The release's own RepositoryEntry (paths relative to the spec that
+      # wrote it), or nil.
+      def repository
+        origin = origins["repository"]
+        origin && RepositoryEntry.from(values["repository"], base: File.dirname(origin.file.path))
+      end
+
+      # BlacklistEntry values in spec order.
+      def blacklist
+        (values["blacklist"] || []).each_with_index.map { |entry, index| BlacklistEntry.from(entry, index) }
+      end
+
+      # package name => Pin, merged over the ancestors.
+      def pins
+        (values["pins"] || {}).transform_values { |entry| Pin.from(entry) }
+      end
+
+      def prefixes
+        Prefixes.from(values.method(:[]))
+      end
+
+      def parents
+        Array(values["parent"])
+      end
+
+      # The workspace (or catalog snapshot) as written, relative to the spec's folder.
+      def workspace
+        values["workspace"]
+      end
+
+      # `select` as written, nil for the workspace's layout.
+      def select
+        values["select"]
+      end
+
+      def maintainer
+        values["maintainer"]
+      end
+
+      # gem name => version of `gems:`.
+      def gems
+        values["gems"] || {}
+      end
+
+      def gem_source
+        values.fetch("gem_source", DEFAULTS["gem_source"])
       end
 
       def distributions

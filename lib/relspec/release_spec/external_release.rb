@@ -1,5 +1,8 @@
 # frozen_string_literal: true
 
+require_relative "values/repository_entry"
+require_relative "values/prefixes"
+
 module Relspec
   module ReleaseSpec
     # A release that has no spec in specs/ but is declared in a spec's
@@ -30,6 +33,15 @@ module Relspec
 
       def value(key)
         @entry[key]
+      end
+
+      # Its repository, paths relative to the declaring spec's folder.
+      def repository
+        RepositoryEntry.from(@entry.slice("path", "url", "keyring", "trusted"), base: File.dirname(declared_in.path))
+      end
+
+      def prefixes
+        Prefixes.from(@entry.method(:[]))
       end
 
       # Two declarations of one external release mean the same release only

@@ -5,6 +5,7 @@ require_relative "rules/parents"
 require_relative "rules/targets"
 require_relative "rules/pins"
 require_relative "rules/blacklist"
+require_relative "rules/leave_out"
 require_relative "rules/repository"
 require_relative "rules/settings"
 require_relative "rules/externals"
@@ -15,7 +16,7 @@ module Relspec
     # known to be right. Each rule reads only fields that passed the schema.
     module FileRules
       ALL = [
-        Rules::ReleaseIdentity, Rules::Parents, Rules::Targets, Rules::Pins, Rules::Blacklist,
+        Rules::ReleaseIdentity, Rules::Parents, Rules::Targets, Rules::Pins, Rules::Blacklist, Rules::LeaveOut,
         Rules::Repository, Rules::Settings, Rules::Externals
       ].freeze
 

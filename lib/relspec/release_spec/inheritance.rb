@@ -2,27 +2,24 @@
 
 require_relative "effective_spec"
 require_relative "origin"
+require_relative "defaults"
 
 module Relspec
   module ReleaseSpec
-    # Computes a release's effective spec from its hierarchy (DESIGN §4):
+    # Computes a release's effective spec from its hierarchy (docs/spec-reference.md, Inheritance):
     #
     # - own keys never inherited: release, description, parent, workspace,
-    #   select, blacklist, repository, external;
+    #   select, blacklist, leave_out, repository, external;
     # - INHERITED keys take the value of the first parent (in `parent` order)
     #   whose effective spec has one, else the built-in default;
     # - pins merge: later parents first, earlier parents over them, the
     #   release's own pins over all.
     class Inheritance
-      OWN = %w[release description parent workspace select blacklist repository external].freeze
+      OWN = %w[release description parent workspace select blacklist leave_out repository external].freeze
       INHERITED = %w[targets install_prefix separate_prefixes package_prefix maintainer distributions gems
-                   gem_source].freeze
+                     gem_source].freeze
       # Keys an external release may set for its descendants.
       EXTERNAL_KEYS = %w[targets install_prefix separate_prefixes package_prefix].freeze
-      DEFAULTS = {
-        "install_prefix" => "/opt/rock", "separate_prefixes" => true, "package_prefix" => "rock",
-        "gems" => {}, "distributions" => {}, "gem_source" => "https://rubygems.org"
-      }.freeze
 
       # The value was written but is broken: checks that depend on it stay quiet.
       BROKEN = Object.new.freeze

@@ -19,6 +19,7 @@ module Relspec
         optional(:workspace).filled(:string)
         optional(:select).array(:str?)
         optional(:blacklist).array { str? | hash? }
+        optional(:leave_out).array(:hash?)
         optional(:pins).value(:hash)
         optional(:gems).value(:hash)
         optional(:gem_source).filled(:string)
@@ -39,6 +40,13 @@ module Relspec
         config.validate_keys = true
         required(:match).filled(:string)
         optional(:reason).filled(:string)
+      end
+
+      LEAVE_OUT_ENTRY = Dry::Schema.JSON do
+        config.validate_keys = true
+        required(:match).filled(:string)
+        required(:reason).filled(:string)
+        optional(:targets).array(:str?)
       end
 
       PIN = Dry::Schema.JSON do

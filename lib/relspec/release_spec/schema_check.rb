@@ -19,6 +19,7 @@ module Relspec
       MISSING_HINTS = {
         "release" => "a spec starts with `release: <name>`, the name of its file",
         "match" => "each entry needs match: (a package name, a glob like drivers/* or a /regex/)",
+        "reason" => "say why the release does without it, e.g. reason: needs qt4, which bookworm lacks",
         "type" => "type is ubuntu or debian",
         "labels" => "labels are the names autoproj knows the distribution by, e.g. [13, trixie, default]"
       }.freeze
@@ -49,7 +50,7 @@ module Relspec
         location = @document.location([])
         if data.nil?
           Diagnostic.error("missing-key", "the file is empty", location: location,
-                                                                hint: "a spec starts with `release: <name>`")
+                                                               hint: "a spec starts with `release: <name>`")
         else
           Diagnostic.error("wrong-type", "a release spec must be a mapping of keys to values, found #{ValueKind.of(data)}",
                            location: location, hint: "a spec starts with `release: <name>`")
@@ -64,6 +65,8 @@ module Relspec
             [key, {}]
           elsif key == "blacklist" && value.is_a?(Array)
             [key, value.map { |entry| entry.is_a?(Hash) ? {} : flat(entry) }]
+          elsif key == "leave_out" && value.is_a?(Array)
+            [key, value.map { |entry| entry.is_a?(Hash) ? {} : entry }]
           elsif key == "select" && value.is_a?(Array)
             [key, value.map { |entry| flat(entry) }]
           else
@@ -82,6 +85,7 @@ module Relspec
 
       def check_entries(data)
         check_blacklist(data["blacklist"])
+        check_list("leave_out", Schema::LEAVE_OUT_ENTRY, data["leave_out"])
         apply(Schema::OWN_REPOSITORY, data["repository"], ["repository"]) if data["repository"].is_a?(Hash)
         ENTRY_MAPPINGS.each do |key, schema|
           next unless data[key].is_a?(Hash)
@@ -103,6 +107,12 @@ module Relspec
         entries.each_with_index do |entry, index|
           apply(Schema::BLACKLIST_ENTRY, entry, ["blacklist", index]) if entry.is_a?(Hash)
         end
+      end
+
+      def check_list(key, schema, entries)
+        return unless entries.is_a?(Array)
+
+        entries.each_with_index { |entry, index| apply(schema, entry, [key, index]) if entry.is_a?(Hash) }
       end
 
       def check_text_values(key, mapping)

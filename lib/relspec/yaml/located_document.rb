@@ -37,13 +37,24 @@ module Relspec
       # Only regular files are read (a FIFO would block forever, a link to
       # /dev/zero never end), and never more than Limits::MAX_BYTES.
       def self.load(file)
-        refusal = refuse_unreadable(file)
-        return failed(file, refusal) if refusal
+        text, refusal = read_text(file)
+        refusal ? failed(file, refusal) : parse(text, file: file)
+      end
 
-        parse(File.open(file, "rb") { |io| io.read(Limits::MAX_BYTES + 1) } || "", file: file)
+      # The file's text as UTF-8 ([text, nil]) or why it cannot be read as
+      # text ([nil, diagnostic]), with the same limits as #load: for readers
+      # that look at a file before knowing which format it holds.
+      def self.read_text(file)
+        refusal = refuse_unreadable(file)
+        return [nil, refusal] if refusal
+
+        bytes = File.open(file, "rb") { |io| io.read(Limits::MAX_BYTES + 1) } || ""
+        return [nil, too_large(file)] if bytes.bytesize > Limits::MAX_BYTES
+
+        TextEncoding.decode(bytes, file: file)
       rescue SystemCallError => e
-        failed(file, Diagnostic.error("unreadable-file", "cannot read the file: #{e.message.sub(/ @ .*/, '')}",
-                                      location: Location.file_only(file)))
+        [nil, Diagnostic.error("unreadable-file", "cannot read the file: #{e.message.sub(/ @ .*/, '')}",
+                               location: Location.file_only(file))]
       end
 
       def self.refuse_unreadable(file)
@@ -206,7 +217,7 @@ module Relspec
           key_path = (path + [key]).freeze
           if first_seen.key?(key)
             @diagnostics << Diagnostic.error("duplicate-key", "duplicate key \"#{key}\"", location: at(key_node),
-                                             hint: "it is already set at line #{first_seen[key]}; keep only one")
+                                                                                          hint: "it is already set at line #{first_seen[key]}; keep only one")
             next
           end
           first_seen[key] = key_node.start_line + 1

@@ -19,7 +19,7 @@ RSpec.describe Relspec::Apt::Repository do
     path = File.join(@dir, "repo")
     builder = AptRepositoryBuilder.new(path, codenames: %w[bionic buster], architectures: %w[amd64 arm64], **options)
     builder.add("rock-x-base-types", "1.0.20200601.103000-1~bionic", codename: "bionic", arch: "amd64",
-                                                                      depends: "rock-x-base-cmake (>= 1.0)", source: "rock-x-base-types")
+                                                                     depends: "rock-x-base-cmake (>= 1.0)", source: "rock-x-base-types")
     builder.add("rock-x-base-cmake", "1.0.20200504.080000-1~bionic", codename: "bionic", arch: "amd64", provides: "rock-cmake")
     builder.add("rock-x-data", "3.0-1~buster", codename: "buster", arch: "all")
     path

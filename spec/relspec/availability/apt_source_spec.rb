@@ -43,8 +43,8 @@ RSpec.describe Relspec::Availability::AptSource do
     wanted = %w[libfoo1.2-dev data-common libbar-virtual-dev libnew-dev libfoo1.3-dev]
     answers = source.lookup_many({ target("jammy/amd64") => wanted, target("jammy/arm64") => wanted })
     expect(answers[target("jammy/amd64")]).to eq([{ "libfoo1.2-dev" => true, "data-common" => true,
-                                                     "libbar-virtual-dev" => true, "libnew-dev" => true,
-                                                     "libfoo1.3-dev" => false }, nil])
+                                                    "libbar-virtual-dev" => true, "libnew-dev" => true,
+                                                    "libfoo1.3-dev" => false }, nil])
     expect(answers[target("jammy/arm64")][0]).to eq("libfoo1.2-dev" => false, "data-common" => true,
                                                     "libbar-virtual-dev" => false, "libnew-dev" => false,
                                                     "libfoo1.3-dev" => false)

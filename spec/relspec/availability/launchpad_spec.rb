@@ -10,7 +10,6 @@ require "relspec/plan/target"
 # Launchpad's documented JSON shapes (see spec/support/launchpad_server.rb
 # for which responses are modelled on what).
 RSpec.describe Relspec::Availability::LaunchpadClient do
-
   let(:pauses) { [] }
 
   def client(server, **options)

@@ -40,7 +40,7 @@ RSpec.describe "relspec build --backend host" do
   it "refuses a target the release does not have" do
     run = relspec("build", "specs/hb.yml", "--out", "out", "--backend", "host", "--target", "trixie/amd64", chdir: @dir)
     expect(run.exit_code).to eq(1)
-    expect(run.stderr).to eq("relspec: error: hb has no target trixie/amd64 (targets: bookworm/amd64)\n")
+    expect(run.stderr).to eq("relspec: error: trixie/amd64 is not a target of hb (bookworm/amd64)\n")
   end
 end
 

@@ -68,7 +68,7 @@ RSpec.describe "relspec build scheduling (host backend)", order: :defined do
   def build(**options)
     log = BuildEventLog.new
     reports = Relspec::Builder.run(@release.spec_path, out: File.join(@dir, "out"), backend: "host", listener: log,
-                                                     **options)
+                                                       **options)
     [reports.first, log]
   end
 

@@ -2,7 +2,7 @@
 
 require "spec_helper"
 require "relspec/catalog/autoproj_loader"
-require_relative "../../support/rock_workspace"
+require_relative "../../support/rock_workspace_context"
 
 # relspec loads a workspace once per target distribution; what autoproj says
 # while loading (here: the Rock package set overrides autoproj's own cmake
@@ -25,14 +25,7 @@ RSpec.describe Relspec::Catalog::AutoprojMessages do
   end
 
   context "through the CLI, on a workspace of real Rock package sets" do
-    before(:all) do
-      need_fixture(RockWorkspace.available?, RockWorkspace.skip_reason)
-      @dir = Dir.mktmpdir("relspec-autoproj-messages")
-      @workspace = RockWorkspace.new(File.join(@dir, "ws"))
-      @workspace.create
-    end
-
-    after(:all) { FileUtils.rm_rf(@dir) if @dir }
+    include_context "a real Rock workspace"
 
     it "says autoproj's warnings once for all targets, on stderr, without terminal styles" do
       FileUtils.mkdir_p(File.join(@dir, "specs"))

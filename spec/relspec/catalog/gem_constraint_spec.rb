@@ -2,24 +2,19 @@
 
 require "spec_helper"
 require "relspec/catalog/release_catalog"
-require_relative "../../support/rock_workspace"
+require_relative "../../support/rock_workspace_context"
 
 # Rock's osdeps ask for `rice<4.0.0` (base/types' bindings use the Rice 3
 # API): a `gems:` version outside an osdeps constraint is refused, as
 # autoproj would never install it for that package. The rice gems here are
 # stand-ins (GemBuilder): only their versions matter.
 RSpec.describe "gem versions against the osdeps' constraints" do
-  before(:all) do
-    need_fixture(RockWorkspace.available?, RockWorkspace.skip_reason)
+  include_context "a real Rock workspace"
 
-    @dir = Dir.mktmpdir("relspec-gem-constraint")
-    @workspace = RockWorkspace.new(File.join(@dir, "ws"))
-    @workspace.create
+  before(:all) do
     @gems = File.join(@dir, "gems")
     %w[3.0.0 4.0.2].each { |version| GemBuilder.build(@gems, "rice", version) }
   end
-
-  after(:all) { FileUtils.rm_rf(@dir) if @dir }
 
   def load(version)
     body = "release: rel\nworkspace: #{@workspace.root}\ntargets: { bookworm: [amd64] }\n" \

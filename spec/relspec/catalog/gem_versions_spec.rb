@@ -16,6 +16,9 @@ RSpec.describe Relspec::Catalog::GemVersions do
                       "2.0.0.rc1 |checksum:dd\n1.9.1 |checksum:ee,ruby:>= 2.5\n"
     end
     @server.mount_proc("/info/endless") { |_, response| StreamedBody.attach(response, "9.9.9 |checksum:ff\n" * 4096, 0) }
+    @server.mount_proc("/info/html") { |_, response| response.body = "<html><body>Proxy login</body></html>\n" }
+    @server.mount_proc("/info/cut") { |_, response| response.body = "---\n1.0.0 |checksum:aa\n1.1.0 |chec" }
+    @server.mount_proc("/info/binary") { |_, response| response.body = "\x1F\x8B\x08\x00\xFF".b }
     @server.mount_proc("/info/drip") { |_, response| StreamedBody.attach(response, "1", 0.05) }
     @thread = Thread.new { @server.start }
     @url = "http://127.0.0.1:#{@server.config[:Port]}"
@@ -32,6 +35,17 @@ RSpec.describe Relspec::Catalog::GemVersions do
 
   it "has no versions of a gem the server does not know" do
     expect(described_class.new(@url, base_dir: "/").of("nothing")).to eq([])
+  end
+
+  {
+    "an HTML page" => ["html", ':1: not a compact index line ("VERSION DEPENDENCIES|checksum:SHA256"): "<html><body>Proxy login</body></html>"'],
+    "a truncated index" => ["cut", ':3: not a compact index line ("VERSION DEPENDENCIES|checksum:SHA256"): "1.1.0 |chec"'],
+    "a binary answer" => ["binary", ": not a compact index (not UTF-8 text)"]
+  }.each do |what, (name, message)|
+    it "refuses #{what} as the compact index, naming the URL and line (never 'no versions')" do
+      expect { described_class.new(@url, base_dir: "/").of(name) }
+        .to raise_error(described_class::Problem, "#{@url}/info/#{name}#{message}")
+    end
   end
 
   it "stops an endless index at its size cap" do

@@ -3,22 +3,14 @@
 require "spec_helper"
 require "open3"
 require "relspec/catalog/release_catalog"
-require_relative "../../support/rock_workspace"
+require_relative "../../support/rock_workspace_context"
 
 # A pin builds another commit than the checkout's, and that commit declares
 # its own dependencies: base/cmake's tag rock-15.05 names only cmake in its
 # manifest.xml, master names cmake and pkg-config (real repositories from
 # ../shared/fixtures/rock-repos, loaded by autoproj).
 RSpec.describe "dependencies of a pinned package" do
-  before(:all) do
-    need_fixture(RockWorkspace.available?, RockWorkspace.skip_reason)
-
-    @dir = Dir.mktmpdir("relspec-pinned")
-    @workspace = RockWorkspace.new(File.join(@dir, "ws"))
-    @workspace.create
-  end
-
-  after(:all) { FileUtils.rm_rf(@dir) if @dir }
+  include_context "a real Rock workspace"
 
   def os_apt(body)
     with_specs("rel" => "release: rel\nworkspace: #{@workspace.root}\ntargets: { bookworm: [amd64] }\n#{body}") do |dir|

@@ -2,25 +2,20 @@
 
 require "spec_helper"
 require "relspec/catalog/release_catalog"
-require_relative "../../support/rock_workspace"
+require_relative "../../support/rock_workspace_context"
 
 # autoproj resolves the `ruby` osdep to `ruby<major><minor>` and loads
 # `.osdeps-ruby<major><minor>` files for the Ruby it runs on; a release is
 # built for the target distribution's Ruby (bionic 2.5, bookworm 3.1), not
 # relspec's. utilrb's manifest.xml names the `ruby` osdep.
 RSpec.describe "Ruby-version-specific osdeps" do
-  before(:all) do
-    need_fixture(RockWorkspace.available?, RockWorkspace.skip_reason)
+  include_context "a real Rock workspace"
 
-    @dir = Dir.mktmpdir("relspec-ruby-osdeps")
-    @workspace = RockWorkspace.new(File.join(@dir, "ws"))
-    @workspace.create
+  before(:all) do
     sets = File.join(@workspace.root, "package_sets", "orocos.toolchain")
     File.write(File.join(sets, "orocos.toolchain.osdeps-ruby25"), "ruby25:\n  debian,ubuntu: ruby2.5-dev\n")
     File.write(File.join(sets, "orocos.toolchain.osdeps-ruby31"), "ruby31:\n  debian,ubuntu: ruby3.1-dev\n")
   end
-
-  after(:all) { FileUtils.rm_rf(@dir) if @dir }
 
   it "are chosen per target distribution's Ruby" do
     with_specs("rel" => "release: rel\nworkspace: #{@workspace.root}\ntargets: { bionic: [amd64], bookworm: [amd64] }\n") do |dir|

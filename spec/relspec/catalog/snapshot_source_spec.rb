@@ -60,7 +60,7 @@ RSpec.describe Relspec::Catalog::SnapshotSource do
   # Each edit damages one field of a real export; the message must name the
   # field and its line, never a Ruby exception.
   {
-    "a package that is a list" => [/^  base\/types:\n/, "  base/types: []\n  x:\n", "packages.base/types must be a mapping"],
+    "a package that is a list" => [%r{^  base/types:\n}, "  base/types: []\n  x:\n", "packages.base/types must be a mapping"],
     "a dependency list that is text" => [/^    dependencies:\n(    - .*\n)+/, "    dependencies: base/cmake\n",
                                          "dependencies must be a list"],
     "an unknown vcs key" => [/^    vcs:\n/, "    vcs:\n      colour: red\n", "vcs.colour must be one of"],

@@ -45,7 +45,7 @@ RSpec.describe "compiling Ruby gemspec and oroGen packages" do
     builder.create
     FileUtils.mkdir_p(File.join(@dir, "specs"))
     File.write(File.join(@dir, "specs", "types.yml"), "release: types\nworkspace: ../ws/workspace\n" \
-                                                       "targets: { bookworm: [amd64] }\nmaintainer: Demo <demo@example.org>\n")
+                                                      "targets: { bookworm: [amd64] }\nmaintainer: Demo <demo@example.org>\n")
     @run = relspec("compile", "specs/types.yml", "--out", "out", chdir: @dir)
     @tools = File.join(@dir, "tools")
     FileUtils.mkdir_p(@tools)

@@ -165,7 +165,7 @@ RSpec.describe "compile progress" do
       calls = []
       require "relspec/compile"
       Relspec::Compile.run(File.join(dir, "specs", "prog.yml"), out: File.join(dir, "out"),
-                           progress: ->(done, total) { calls << [done, total] })
+                                                                progress: ->(done, total) { calls << [done, total] })
       expect(calls.sort).to eq([[1, 4], [2, 4], [3, 4], [4, 4]])
       run = relspec("compile", "specs/prog.yml", "--out", "out2", chdir: dir)
       expect(run.exit_code).to eq(0), run.stderr

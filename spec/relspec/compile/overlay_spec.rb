@@ -6,7 +6,6 @@ require "digest"
 # Overlays and incremental compiles: changing one package regenerates only
 # it, with the next revision.
 RSpec.describe "relspec compile with overlays" do
-
   around do |example|
     Dir.mktmpdir("relspec-overlay") do |dir|
       @dir = dir

@@ -2,7 +2,7 @@
 
 require "spec_helper"
 require "yaml"
-require_relative "../../support/rock_workspace"
+require_relative "../../support/rock_workspace_context"
 require_relative "../../support/rock_gems"
 require_relative "../../support/installed_system"
 
@@ -19,15 +19,13 @@ require_relative "../../support/installed_system"
 RSpec.describe "a release of real Rock packages" do
   let(:release) { "rock" }
 
-  before(:all) do
-    need_fixture(RockWorkspace.available?, RockWorkspace.skip_reason)
+  include_context "a real Rock workspace"
 
-    @dir = Dir.mktmpdir("relspec-rock")
-    @workspace = RockWorkspace.new(File.join(@dir, "ws"))
-    @workspace.create
+  before(:all) do
     @facets = RockGems.facets(File.join(@dir, "gems"))
     # offline, a stand-in with the two files utilrb loads; CI always builds the real gem
     raise "facets-3.1.0.gem is neither in #{RockGems::CACHE} nor fetchable" if @facets == :stand_in && ENV["CI"]
+
     need_fixture(RockGems.rice(File.join(@dir, "gems")), "rice-3.0.0.gem is neither in #{RockGems::CACHE} nor fetchable")
     FileUtils.mkdir_p(File.join(@dir, "specs"))
     File.write(File.join(@dir, "specs", "rock.yml"), <<~YAML)
@@ -63,8 +61,6 @@ RSpec.describe "a release of real Rock packages" do
     # a Rock user's machine has autoproj's own utilrb and facets, newer than the release's
     @system.install_gems(%w[utilrb facets].map { |name| (Gem.loaded_specs[name] || Gem::Specification.find_by_name(name)).cache_file })
   end
-
-  after(:all) { FileUtils.rm_rf(@dir) if @dir }
 
   # The end of the log of each package that did not build, for the failure message.
   def failed_logs

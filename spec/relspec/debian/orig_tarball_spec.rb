@@ -68,7 +68,7 @@ RSpec.describe Relspec::Debian::OrigTarball, :tmpdir do
     path = File.join(@dir, "gem.tar.gz")
     described_class.write(path, checkout: tree, commit: nil, prefix: "pkg-1.0", mtime: Time.utc(2020), everything: true)
     entries = listing(path)
-    expect(entries.grep(/ pkg-1\.0\/include -> /).first).to end_with("pkg-1.0/include -> src/inc\n")
+    expect(entries.grep(%r{ pkg-1\.0/include -> }).first).to end_with("pkg-1.0/include -> src/inc\n")
     expect(entries.map { |line| line.split.last }).to include("pkg-1.0/build/extconf.rb", "pkg-1.0/.gitignore")
   end
 end

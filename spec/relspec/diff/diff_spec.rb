@@ -170,8 +170,8 @@ RSpec.describe "relspec diff" do
     moved = "base/types changed version (2.0.20200302.140000-1~bionic → 2.0.20200601.103000-1~bionic)"
     text = diff.stdout
     expect(text).to include("    version  drivers/iodrivers_base: build rock-child-drivers-iodrivers-base 1.0.20200603.091500-1~bionic → " \
-                            "build rock-child-drivers-iodrivers-base 1.0.20200603.091500-2~bionic\n" \
-                            "      rebuilt with the same source because #{moved}; built because depends on base/types ← " \
+                            "build rock-child-drivers-iodrivers-base 1.0.20200603.091500-2~bionic\n      " \
+                            "rebuilt with the same source because #{moved}; built because depends on base/types ← " \
                             'blacklisted by "base/types" (the child needs its own build)')
     markdown = diff("--format", "markdown").stdout
     expect(markdown).to include("- 2 rebuilt because #{moved}: `drivers/iodrivers_base`, `tools/orocos.rb` (bionic/amd64)")

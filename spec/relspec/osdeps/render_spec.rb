@@ -12,7 +12,8 @@ RSpec.describe "relspec osdeps render" do
     @fixture = ReleaseFixture.new(@dir)
     all = %w[base/cmake base/logging base/types data/models drivers/iodrivers_base tools/legacy tools/orocos.rb]
     @fixture.repository("parent", [%w[bionic amd64], %w[bionic arm64], %w[buster amd64]], all.to_h { |n| [n, {}] })
-    @fixture.spec("parent", "targets: { bionic: [amd64, arm64], buster: [amd64] }\nrepository: { path: ../repos/parent, trusted: true }\n" \
+    @fixture.spec("parent", "targets: { bionic: [amd64, arm64], buster: [amd64] }\n" \
+                            "repository: { url: https://example.org/releases/parent, path: ../repos/parent, trusted: true }\n" \
                             "maintainer: Demo <demo@example.org>\n")
     @fixture.spec("child", "parent: parent\nblacklist: [{ match: base/types, reason: new API }]\n" \
                            "repository: { url: https://example.org/releases/child, path: ../repos/child, trusted: true }\n")
@@ -87,5 +88,44 @@ RSpec.describe "relspec osdeps render" do
     expect(run.stderr).to eq("wrote releases/releases.yml\n")
     again = relspec("osdeps", "index", "--public-key", "https://example.org/releases/key.asc", chdir: @dir)
     expect(again.stderr).to eq("unchanged releases/releases.yml\n")
+  end
+
+  # What the rock-osdeps package set (github rock-core/rock-osdeps-package_set,
+  # the one Rock users have) does with these files, restated as its contract:
+  # a release's apt source is "<repo_url>/<name>" (its own repo_url, else the
+  # default's), its osdeps file "<that>/osdeps/<name>-<arch>.yml"; depends_on is
+  # one release name, followed recursively.
+  it "writes an index the rock-osdeps package set turns into the spec's URLs and hierarchy" do
+    relspec("osdeps", "index", chdir: @dir)
+    index = YAML.load_file(File.join(@dir, "releases", "releases.yml"))
+    release_url = lambda do |name|
+      entry = index[name] || {}
+      "#{entry.fetch('repo_url', index['default']['repo_url'])}/#{name}"
+    end
+    expect(release_url.call("parent")).to eq("https://example.org/releases/parent")
+    expect(release_url.call("child")).to eq("https://example.org/releases/child")
+    hierarchy = ->(name) { [name, *(index[name]&.key?("depends_on") ? hierarchy.call(index[name]["depends_on"]) : [])] }
+    expect(hierarchy.call("child")).to eq(%w[child parent])
+  end
+
+  # The package set's osdeps lookup: the entry under autoproj's first
+  # distribution name, else under all its names joined with ","; then the
+  # labels key listing one of the system's version names (never "default").
+  it "keys osdeps entries so that the rock-osdeps package set finds them for every target's OS labels" do
+    lookup = lambda do |entry, names, versions|
+      by_labels = entry[names.first] || entry[names.join(",")]
+      by_labels&.find { |labels, _| (labels.split(",") & (versions - ["default"])).any? }&.last
+    end
+    data = YAML.load_file(@amd64)
+    { [%w[ubuntu debian], %w[18.04 18.04.5 lts bionic beaver default]] => "bionic",
+      [%w[debian], %w[10 buster default]] => "buster" }.each do |(names, versions), codename|
+      data.each do |package, entry|
+        owner = rebuilt.include?(package) ? "child" : "parent"
+        next expect(lookup.call(entry, names, versions)).to(be_nil) if package == "tools/legacy" && codename == "buster"
+
+        expect(lookup.call(entry, names, versions)).to eq(@fixture.deb(owner, package)), "#{package} on #{codename}"
+      end
+    end
+    expect(data.values.map { |entry| lookup.call(entry, %w[debian], %w[12 bookworm default]) }.compact).to eq([])
   end
 end

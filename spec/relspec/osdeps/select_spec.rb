@@ -8,7 +8,7 @@ RSpec.describe "relspec osdeps select" do
   def packages
     {
       "base/cmake" => ["rock-rel-base-cmake", nil, nil],
-      "base/types" => ["rock-rel-base-types", "rock-rel-base-cmake", "rock-typekit"],
+      "base/types" => %w[rock-rel-base-types rock-rel-base-cmake rock-typekit],
       "base/logging" => ["rock-rel-base-logging", "rock-rel-base-cmake (>= 1.0)", nil],
       "drivers/iodrivers" => ["rock-rel-drivers-iodrivers", "rock-rel-base-types | rock-rel-base-logging", nil],
       "tools/monitor" => ["rock-rel-tools-monitor", "rock-rel-drivers-iodrivers, libc6", nil],
@@ -86,6 +86,27 @@ RSpec.describe "relspec osdeps select" do
     run = select("--blacklist", blacklist("- \"gui/*\"\n- /^tools\\/mon/\n- simulation/**\n"))
     expect(output("rock-osdeps.inactive").keys).to eq(%w[gui/viewer tools/monitor])
     expect(run.stderr).to include('deb_blacklist.yml:3:3: warning[unmatched-blacklist]: "simulation/**" matches no package of rel')
+  end
+
+  it "reads the rock-osdeps package set's blacklist syntax: a plain name, else an unanchored regex" do
+    # the package set README's own example
+    run = select("--blacklist", blacklist("- base/types\n- ^orogen$\n- simulation/.*\n"))
+    expect(run.exit_code).to eq(0), run.stderr
+    expect(output("rock-osdeps.inactive").keys).to eq(["base/types"])
+    expect(run.stderr).to include('deb_blacklist.yml:2:3: warning[unmatched-blacklist]: "^orogen$" matches no package')
+    expect(run.stderr).not_to include("error")
+  end
+
+  it "warns where relspec's and the package set's readings of an entry differ, and disables both" do
+    run = select("--blacklist", blacklist("- drivers/.*\n- /^gui/\n- \"tools/*\"\n"))
+    expect(run.exit_code).to eq(0), run.stderr
+    expect(output("rock-osdeps.inactive").keys).to eq(%w[drivers/iodrivers gui/viewer tools/monitor tools/typekit-user])
+    expect(run.stderr.lines.grep(/blacklist-reading/)).to eq([
+      'deb_blacklist.yml:1:3: warning[blacklist-reading]: "drivers/.*": relspec reads it as a glob (matches nothing), ' \
+      "the rock-osdeps package set as an unanchored regular expression (drivers/iodrivers): both are disabled\n",
+      'deb_blacklist.yml:2:3: warning[blacklist-reading]: "/^gui/": relspec reads it as a regex (gui/viewer), ' \
+      "the rock-osdeps package set as a name (matches nothing): both are disabled\n"
+    ])
   end
 
   {

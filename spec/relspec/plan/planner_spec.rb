@@ -6,7 +6,6 @@ require "relspec/plan"
 # Plans releases against real reprepro repositories: the root's read over
 # HTTP from a WEBrick server, the others from disk.
 RSpec.describe "relspec plan" do
-
   before(:all) do
     @dir = Dir.mktmpdir("relspec-plan")
     @fixture = ReleaseFixture.new(@dir)
@@ -92,7 +91,7 @@ RSpec.describe "relspec plan" do
   end
 
   it "notes drift when the workspace is newer than what an ancestor has" do
-    expect(leaf.notes).to include(a_string_matching(/drift: base\/logging is at 1\.1\.20200520\.120000 in the workspace, root has 1\.1\.20200101\.000000/))
+    expect(leaf.notes).to include(a_string_matching(%r{drift: base/logging is at 1\.1\.20200520\.120000 in the workspace, root has 1\.1\.20200101\.000000}))
   end
 
   it "chains causes through several levels of dependencies" do
@@ -126,7 +125,7 @@ RSpec.describe "relspec plan" do
     expect(decisions(published, "bionic/amd64")["data/models"]).to eq('published: blacklisted by "data/models" (local patches)')
     expect(decisions(published, "buster/amd64")["data/models"]).to eq('build: blacklisted by "data/models" (local patches)')
     expect(published.counts(Relspec::Plan::Target.parse("bionic/amd64"))).to eq(inherit: 6, build: 0, published: 1, system: 0,
-                                                                                   unavailable: 0)
+                                                                                unavailable: 0)
   end
 
   it "leaves out what a target cannot have, and says why in the lock, the reports and `why`" do
@@ -138,7 +137,7 @@ RSpec.describe "relspec plan" do
     expect(leaf.counts(target)[:unavailable]).to eq(1)
 
     lock = YAML.safe_load(Relspec::Plan::LockGenerator.dump(Relspec::Plan::Lock.from_plan(leaf, "0" * 64,
-                                                                                         Relspec::Plan::History.empty)))
+                                                                                          Relspec::Plan::History.empty)))
     expect(lock.dig("targets", "buster/amd64", "tools/legacy"))
       .to eq("decision" => "unavailable", "causes" => ["osdep motif is nonexistent on buster"])
     expect(lock.dig("targets", "bionic/amd64", "tools/legacy", "decision")).to eq("build")
@@ -157,7 +156,7 @@ RSpec.describe "relspec plan" do
 
   it "refuses a blacklist entry that matches no package" do
     expect { plan("nomatch", "parent: root\nblacklist: [{ match: \"simulation/*\", reason: x }]\n") }
-      .to raise_error(Relspec::InvalidInput, /blacklist entry "simulation\/\*" matches no package of the workspace/)
+      .to raise_error(Relspec::InvalidInput, %r{blacklist entry "simulation/\*" matches no package of the workspace})
   end
 
   it "reads each ancestor index once per target, never once per package" do

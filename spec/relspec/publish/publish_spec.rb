@@ -190,7 +190,7 @@ RSpec.describe "relspec publish" do
     # one included the packages, the other found them there: the lock
     # serialised them (without it both would see an empty repository)
     expect(runs.map { |run| run.stdout[/\d+ published, \d+ already/] }).to contain_exactly("2 published, 0 already",
-                                                                                              "0 published, 2 already")
+                                                                                           "0 published, 2 already")
     %w[check checkpool].each do |command|
       output, status = Open3.capture2e("reprepro", "-b", repository, command)
       expect(status).to be_success, output
@@ -231,7 +231,7 @@ RSpec.describe "relspec publish" do
     end
     run = publish
     expect(run.exit_code).to eq(1)
-    expect(run.stderr).to match(/reprepro includedeb failed \(exit status \d+\) in .*repos\/solo:\n/)
+    expect(run.stderr).to match(%r{reprepro includedeb failed \(exit status \d+\) in .*repos/solo:\n})
     expect(run.stderr).to include(File.basename(deb))
     expect(run.stderr).not_to include(".rb:")
   ensure

@@ -10,13 +10,13 @@ RSpec.describe Relspec::Yaml::LocatedDocument do
   it "keeps 1-based positions of keys and values" do
     document = parse("release: x\ntargets:\n  bionic: [amd64, arm64]\n")
     expect(document.location(["targets", "bionic", 1]).to_s).to eq("specs/x.yml:3:19")
-    expect(document.key_location(["targets", "bionic"]).to_s).to eq("specs/x.yml:3:3")
+    expect(document.key_location(%w[targets bionic]).to_s).to eq("specs/x.yml:3:3")
     expect(document.location(["release"]).to_s).to eq("specs/x.yml:1:10")
   end
 
   it "falls back to the enclosing value for paths that do not exist" do
     document = parse("repository:\n  url: x\n")
-    expect(document.location(["repository", "path"]).to_s).to eq("specs/x.yml:2:3")
+    expect(document.location(%w[repository path]).to_s).to eq("specs/x.yml:2:3")
   end
 
   it "reports duplicate keys at the second occurrence, naming the first" do

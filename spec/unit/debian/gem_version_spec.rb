@@ -1,6 +1,6 @@
 # frozen_string_literal: true
 
-require "spec_helper"
+require_relative "../unit_helper"
 require "relspec/debian/gem_version"
 
 # The gem ↔ Debian version mapping, both ways, in memory.

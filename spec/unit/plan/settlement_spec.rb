@@ -1,6 +1,6 @@
 # frozen_string_literal: true
 
-require "spec_helper"
+require_relative "../unit_helper"
 require "relspec/plan"
 
 # Settlement fed in memory: a catalog, decisions as the Planner gives them,

@@ -16,7 +16,7 @@ module Relspec
           entries = parent.is_a?(Array) ? parent.each_with_index.map { |name, i| [name, ["parent", i]] } : [[parent, ["parent"]]]
           if parent.is_a?(Array) && parent.empty?
             return [Diagnostic.error("empty-value", "\"parent\" must not be an empty list", location: file.location(["parent"]),
-                                     hint: "remove the key for a release without parents")]
+                                                                                            hint: "remove the key for a release without parents")]
           end
 
           seen = []
@@ -27,7 +27,7 @@ module Relspec
           end
         end
 
-        def self.entry_problem(file, name, seen)
+        def self.entry_problem(_file, name, seen)
           if !name.is_a?(String)
             ["wrong-type", "a parent must be a release name, found #{ValueKind.of(name)}", nil]
           elsif !Names.release?(name)

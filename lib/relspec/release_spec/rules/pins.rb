@@ -38,9 +38,10 @@ module Relspec
                                      hint: "a pin names exactly one of commit, tag or branch")]
           end
           if refs.empty?
-            return [Diagnostic.error("pin-ref", "the pin of #{package} sets none of commit, tag or branch",
-                                     location: file.location(path), hint: "write { commit: <sha> } or { tag: <name> }")] \
-              if pin.keys.all? { |key| REFS.include?(key) }
+            if pin.keys.all? { |key| REFS.include?(key) }
+              return [Diagnostic.error("pin-ref", "the pin of #{package} sets none of commit, tag or branch",
+                                       location: file.location(path), hint: "write { commit: <sha> } or { tag: <name> }")]
+            end
 
             return []
           end

@@ -16,7 +16,7 @@ module Relspec
           location = file.location(["release"])
           unless Names.release?(release)
             return [Diagnostic.error("release-name", "invalid release name #{release.inspect}", location: location,
-                                     hint: Names::RELEASE_HINT)]
+                                                                                                hint: Names::RELEASE_HINT)]
           end
           return [] if release == file.file_release
 

@@ -22,7 +22,7 @@ module Relspec
 
           if targets.empty?
             return [Diagnostic.error("empty-targets", "\"targets\" lists no distribution", location: file.location(path),
-                                     hint: "add `bionic: [amd64]` style entries, or remove the key to use the parent's")]
+                                                                                           hint: "add `bionic: [amd64]` style entries, or remove the key to use the parent's")]
           end
 
           targets.flat_map { |codename, architectures| check_target(file, path + [codename], codename, architectures) }
@@ -40,7 +40,7 @@ module Relspec
           end
           if architectures.empty?
             return [Diagnostic.error("empty-targets", "#{codename} lists no architecture", location: file.location(path),
-                                     hint: "write #{codename}: [amd64], or remove #{codename}")]
+                                                                                           hint: "write #{codename}: [amd64], or remove #{codename}")]
           end
 
           check_architectures(file, path, codename, architectures)

@@ -1,10 +1,12 @@
 # frozen_string_literal: true
 
 require "spec_helper"
-require "relspec/publish/build_results"
+require "tmpdir"
+require "fileutils"
+require "relspec/builder/build_results"
 require "relspec/plan/target"
 
-RSpec.describe Relspec::Publish::BuildResults do
+RSpec.describe Relspec::Builder::BuildResults do
   let(:target) { Relspec::Plan::Target.new("bookworm", "amd64") }
   let(:sha) { "a" * 64 }
   let(:good) do
@@ -59,17 +61,49 @@ RSpec.describe Relspec::Publish::BuildResults do
     "an invalid version" => [["version: 2.0-1~bookworm", "version: 2.0 beta"], 16, 'invalid Debian version "2.0 beta"'],
     "another format" => [["relspec_build_results: 1", "relspec_build_results: 2"], 1, "unknown format 2"],
     "another target" => [["target: bookworm/amd64", "target: bionic/amd64"], 3, 'target is "bionic/amd64", expected "bookworm/amd64"'],
+    "files as an integer" => [[/ {6}- \{ name.*\n/, "      7\n"], 13, "packages.rock-demo-base-base-cmake.files must be a list of files"],
+    "a file as a list" => [[/- \{ name.*\}/, "- [a, b]"], 13, "files.0 must be a mapping of name, sha256 and size"],
+    "a duration as text" => [["duration: 3.0", "duration: soon"], 18, "duration must be a number of seconds"],
+    "a log outside the folder" => [["log: logs/rock-demo-base-base-types.log", "log: /etc/passwd"], 19, "is not a plain path"],
+    "a version as a list" => [["version: 2.0-1~bookworm", "version: [2]"], 16, "version must be text"],
     "a built package without files" => [[/ {4}files:\n.*\n/, ""], 7, "a built package lists the files it produced"]
   }.each do |what, ((from, to), line, message)|
     it "refuses #{what} at its line" do
       text = good.sub(from, to)
       expect(text).not_to eq(good)
-      expect(error_of(text)).to match(/\Abuild\/demo-base\/bookworm-amd64\/build-results\.yml:#{line}:\d+: error\[build-results\]: .*#{Regexp.escape(message)}/)
+      expect(error_of(text)).to match(%r{\Abuild/demo-base/bookworm-amd64/build-results\.yml:#{line}:\d+: error\[build-results\]: .*#{Regexp.escape(message)}})
     end
   end
 
+  it "writes what it reads back, sorted, and tells which builds are still intact" do
+    Dir.mktmpdir do |dir|
+      deb = "results/a/a_1_amd64.deb"
+      FileUtils.mkdir_p(File.join(dir, "results/a"))
+      File.write(File.join(dir, deb), "deb bytes")
+      results = described_class.load(dir, release: "demo-base", target: target)
+      expect(results.entries).to be_empty
+      record = described_class::Record
+      results.record(record.new(source: "zz-b", package: "b", version: "2", status: "failed", duration: 1.5,
+                                log: "logs/zz-b.log", reason: "boom", files: []))
+      results.record(record.new(source: "aa-a", package: "a", version: "1", status: "built", duration: 2,
+                                log: "logs/aa-a.log", files: [described_class::Produced.of(dir, deb)]))
+      results.write(backend: "host")
+      again = described_class.load(dir, release: "demo-base", target: target)
+      expect(again.entries.map(&:to_h)).to eq(results.entries.map(&:to_h))
+      expect([again.entries.map(&:source), again.backend]).to eq([%w[aa-a zz-b], "host"])
+      expect([again.built?("aa-a", "1"), again.built?("aa-a", "2"), again.built?("zz-b", "2")]).to eq([true, false, false])
+      File.write(File.join(dir, deb), "changed!!")
+      expect(again.built?("aa-a", "1")).to be(false)
+    end
+  end
+
+  it "refuses binary bytes and a list of files given as null for a built package" do
+    expect(error_of("\x00\xff\xfe".b)).to include("build-results.yml")
+    expect(error_of(good.sub(/ {6}- \{ name.*\n/, "").sub("files:", "files: null"))).to include("a built package lists the files")
+  end
+
   it "refuses results of another release and broken YAML" do
-    expect(error_of(good, release: "demo-child")).to include(':2:', 'release is "demo-base", expected "demo-child"')
+    expect(error_of(good, release: "demo-child")).to include(":2:", 'release is "demo-base", expected "demo-child"')
     expect(error_of("packages: [\n")).to include("build-results.yml:")
     expect(error_of("")).to include("the file is empty or not a mapping")
   end

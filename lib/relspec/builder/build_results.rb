@@ -1,0 +1,211 @@
+# frozen_string_literal: true
+
+require "yaml"
+require "digest"
+require_relative "../atomic_file"
+require_relative "../display_path"
+require_relative "../yaml/located_document"
+require_relative "../yaml/field_reader"
+require_relative "../apt/version"
+require_relative "../diagnostic"
+require_relative "../error"
+
+module Relspec
+  module Builder
+    # <out>/<release>/<codename>-<arch>/build-results.yml: what each source
+    # package's last build gave (docs/build.md). One class holds the writer
+    # (`relspec build`, after every package, atomically, so a killed run
+    # keeps every finished package) and the strict reader (build on resume,
+    # publish): every key known, every value of its type, every path inside
+    # the target folder. A damaged file is an InvalidInput naming file:line,
+    # never "nothing built" and never a crash: publishing from a guess could
+    # put the wrong bytes into a repository, where they stay forever.
+    class BuildResults
+      FILE_NAME = "build-results.yml"
+      FORMAT_KEY = "relspec_build_results"
+      FORMAT_VERSION = 1
+      ROOT_KEYS = [FORMAT_KEY, "release", "target", "backend", "packages"].freeze
+      PACKAGE_KEYS = %w[package version status duration log reason files].freeze
+      FILE_KEYS = %w[name sha256 size].freeze
+      STATUSES = %w[built failed skipped published].freeze
+      SHA256 = /\A[0-9a-f]{64}\z/
+      # Debian policy 5.6.1: at least two characters, lowercase, digits, + - .
+      SOURCE_NAME = /\A[a-z0-9][a-z0-9.+-]+\z/
+      HINT = "build-results.yml is written by `relspec build`: delete it and run `relspec build` again for this target"
+
+      # One produced file, +name+ relative to the target folder.
+      Produced = Struct.new(:name, :sha256, :size, keyword_init: true) do
+        def self.of(dir, name)
+          full = File.join(dir, name)
+          new(name: name, sha256: Digest::SHA256.file(full).hexdigest, size: File.size(full)).freeze
+        end
+
+        def to_h
+          { "name" => name, "sha256" => sha256, "size" => size }
+        end
+
+        # Still there with the bytes recorded.
+        def intact?(dir)
+          path = File.join(dir, name)
+          File.file?(path) && File.size(path) == size && Digest::SHA256.file(path).hexdigest == sha256
+        end
+      end
+
+      # One source package's result. +files+: Produced, empty unless built.
+      Record = Struct.new(:source, :package, :version, :status, :duration, :log, :reason, :files, keyword_init: true) do
+        def built?
+          status == "built"
+        end
+
+        def to_h
+          { "package" => package, "version" => version, "status" => status, "duration" => duration,
+            "log" => log, "reason" => reason, "files" => files.empty? ? nil : files.map(&:to_h) }.compact
+        end
+      end
+
+      attr_reader :path, :release, :target, :backend
+
+      # The results in target folder +dir+, empty when there are none yet.
+      def self.load(dir, release:, target:)
+        path = File.join(dir, FILE_NAME)
+        return new(path, release, target) unless File.exist?(path)
+
+        read(DisplayPath.of(path), release: release, target: target)
+      end
+
+      # The results at +path+, for +release+ and +target+ (a Target).
+      def self.read(path, release:, target:)
+        from(Yaml::LocatedDocument.load(path), release, target)
+      end
+
+      def self.parse(text, file:, release:, target:)
+        from(Yaml::LocatedDocument.parse(text, file: file), release, target)
+      end
+
+      def self.from(document, release, target)
+        reader = Reader.new(document, release, target.to_s)
+        new(document.file, release, target, records: reader.records, backend: reader.backend)
+      end
+      private_class_method :from
+
+      def initialize(path, release, target, records: [], backend: nil)
+        @path = path
+        @release = release
+        @target = target.to_s
+        @backend = backend
+        @records = records.to_h { |record| [record.source, record] }
+      end
+
+      def entries
+        @records.values.sort_by(&:source)
+      end
+
+      def built
+        entries.select(&:built?)
+      end
+
+      def [](source)
+        @records[source]
+      end
+
+      # True when +source+ was built at +version+ and every file it produced
+      # is still there with the bytes recorded.
+      def built?(source, version)
+        record = @records[source]
+        !!record&.built? && record.version == version && record.files.all? { |file| file.intact?(File.dirname(@path)) }
+      end
+
+      def record(record)
+        @records[record.source] = record
+      end
+
+      # Drops the results of sources not in +sources+ (what compile no
+      # longer plans is not a result).
+      def keep_only(sources)
+        wanted = sources.to_h { |source| [source, true] }
+        @records.select! { |source, _| wanted[source] }
+      end
+
+      def write(backend:)
+        @backend = backend
+        data = { FORMAT_KEY => FORMAT_VERSION, "release" => @release, "target" => @target, "backend" => backend,
+                 "packages" => entries.to_h { |record| [record.source, record.to_h] } }
+        AtomicFile.write(@path, YAML.dump(data))
+      end
+
+      # The strict reading of one document.
+      class Reader
+        attr_reader :records, :backend
+
+        def initialize(document, release, target)
+          @fields = Yaml::FieldReader.new(document, rule: "build-results", what: "the build results", hint: HINT)
+          @document = document
+          read(release, target)
+        end
+
+        private
+
+        def read(release, target)
+          data = @fields.root
+          fail_at([FORMAT_KEY], "unknown format #{data[FORMAT_KEY].inspect} (this relspec reads #{FORMAT_VERSION})") \
+            unless data[FORMAT_KEY] == FORMAT_VERSION
+          @fields.known_keys(data, [], ROOT_KEYS)
+          @fields.expect(data, ["release"], release)
+          @fields.expect(data, ["target"], target)
+          @backend = @fields.text(data, ["backend"])
+          @records = @fields.mapping(data, ["packages"]).map { |source, record| record(source, record) }.freeze
+        end
+
+        def record(source, fields)
+          path = ["packages", source]
+          fail_at(path, "#{source.inspect} is not a Debian source package name") unless source.to_s.match?(SOURCE_NAME)
+          fail_at(path, "packages.#{source} must be a mapping") unless fields.is_a?(Hash)
+          @fields.known_keys(fields, path, PACKAGE_KEYS)
+          status = @fields.text(fields, path + ["status"])
+          fail_at(path + ["status"], "status #{status.inspect} is not one of #{STATUSES.join(', ')}") unless STATUSES.include?(status)
+          files = files(fields, path + ["files"])
+          fail_at(path + ["files"], "a built package lists the files it produced") if status == "built" && files.empty?
+          Record.new(source: source, package: @fields.text(fields, path + ["package"]),
+                     version: version(fields, path + ["version"]), status: status,
+                     duration: duration(fields, path + ["duration"]),
+                     log: fields["log"].nil? ? nil : @fields.plain_path(fields, path + ["log"]),
+                     reason: @fields.optional_text(fields, path + ["reason"]), files: files.freeze).freeze
+        end
+
+        def files(fields, path)
+          @fields.list(fields, path, of: "files").each_with_index.map do |file, index|
+            at = path + [index]
+            fail_at(at, "#{@fields.describe(at)} must be a mapping of name, sha256 and size") unless file.is_a?(Hash)
+            @fields.known_keys(file, at, FILE_KEYS)
+            name = @fields.plain_path(file, at + ["name"])
+            sha256 = @fields.text(file, at + ["sha256"])
+            fail_at(at + ["sha256"], "sha256 must be 64 lowercase hex digits") unless sha256.match?(SHA256)
+            size = file["size"]
+            fail_at(at + ["size"], "size must be a number of bytes") unless size.is_a?(Integer) && size >= 0
+            Produced.new(name: name, sha256: sha256, size: size).freeze
+          end
+        end
+
+        def duration(hash, path)
+          value = hash[path.last]
+          return nil if value.nil?
+          fail_at(path, "#{@fields.describe(path)} must be a number of seconds") unless value.is_a?(Numeric) && value >= 0
+
+          value
+        end
+
+        def version(hash, path)
+          value = @document.raw(path) || @fields.text(hash, path)
+          fail_at(path, "#{@fields.describe(path)} must be text") unless value.is_a?(String)
+          fail_at(path, "invalid Debian version #{value.inspect}") unless Apt::Version.valid?(value)
+
+          value
+        end
+
+        def fail_at(path, message)
+          @fields.fail_at(path, message)
+        end
+      end
+    end
+  end
+end

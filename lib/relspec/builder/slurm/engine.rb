@@ -1,0 +1,328 @@
+# frozen_string_literal: true
+
+require "digest"
+require "fileutils"
+require_relative "../../atomic_file"
+require_relative "../../error"
+require_relative "../build_plan"
+require_relative "../request"
+require_relative "../scheduler"
+require_relative "job_result"
+require_relative "job_script"
+
+module Relspec
+  module Builder
+    module Slurm
+      # Builds one target's plan on a Slurm cluster: relspec keeps the
+      # graph and the backend's command lines, Slurm places and runs the
+      # jobs. A chroot-prepare job on a node of the target's architecture,
+      # then one job per source package depending (afterok) on it and on
+      # the jobs of its build-dependencies built in this run; everything is
+      # submitted held in plan (topological) order and released at once.
+      #
+      # The run id is a digest of the target folder, the backend and
+      # plan.yml: running again on the same plan adopts the run's jobs still
+      # in the queue and submits only what is missing. Job ids of earlier
+      # runs are never used in a dependency: Slurm treats an id it has
+      # forgotten as satisfied.
+      #
+      # Outcomes are Scheduler::Outcome, handed to +on_done+ as the local
+      # scheduler does, so build-results.yml is written the same way.
+      class Engine
+        # States after which a job does not run again.
+        CANCELLED = "CANCELLED"
+        COMPLETED = "COMPLETED"
+
+        Settled = Struct.new(:outcome)
+
+        def initialize(cluster:, settings:, backend:, notices: nil)
+          @cluster = cluster
+          @settings = settings
+          @backend = backend
+          @notices = notices
+        end
+
+        # +plan+: BuildPlan; +done+: sources built before (not run again);
+        # +done_debs+: their .debs; +repositories+: as for the local builds;
+        # +rebuild+: the result files of an earlier relspec of this run are
+        # not taken either.
+        def run(plan:, target:, repositories:, done:, done_debs:, keep_going:, rebuild: false, on_start: nil,
+                on_done: nil)
+          @plan = plan
+          @target = target
+          @dir = plan.dir
+          @run_id = run_id
+          @jobs_dir = File.join(@dir, "slurm", @run_id)
+          FileUtils.mkdir_p(@jobs_dir)
+          @on_start = on_start
+          @on_done = on_done
+          @outcomes = []
+          @failed = {} # source => the failed source (or chroot job) it goes back to
+          @stopped = false
+          @keep_going = keep_going
+          pending = plan.entries.reject { |entry| done.include?(entry.source) }
+          @tracked = {} # job id => entry
+          live = live_jobs
+          pending = settle_finished(pending, live) unless rebuild
+          return @outcomes if pending.empty?
+
+          submit_all(pending, live, repositories, done_debs)
+          poll
+          @outcomes
+        rescue Interrupt
+          cancel_all
+          raise
+        end
+
+        private
+
+        def run_id
+          Digest::SHA256.hexdigest([@dir, @backend.name, File.read(File.join(@dir, BuildPlan::FILE))].join("\0"))[0, 12]
+        end
+
+        def job_name(source)
+          "#{@plan.release}/#{@target.dir_name}/#{source}@#{@run_id}"
+        end
+
+        # The run's jobs still queued or running (an earlier relspec of this
+        # run was killed): source (or "chroot") => job.
+        def live_jobs
+          suffix = "@#{@run_id}"
+          prefix = "#{@plan.release}/#{@target.dir_name}/"
+          @cluster.queue.select { |job| job.live? && job.name.to_s.end_with?(suffix) && job.name.start_with?(prefix) }
+                  .sort_by(&:id).to_h { |job| [job.name.delete_prefix(prefix).delete_suffix(suffix), job] }
+        end
+
+        # Packages whose job (of an earlier relspec of this run) finished
+        # and wrote a verified result: recorded built without a new job.
+        def settle_finished(pending, live)
+          pending.reject do |entry|
+            next false if live[entry.source]
+
+            result = JobResult.read(result_path(entry.source), @dir)
+            next false unless result&.built? && result.mismatch.nil?
+
+            report(Scheduler::Outcome.new(entry: entry, status: :built, value: result.paths, duration: result.duration))
+            true
+          end
+        end
+
+        def submit_all(pending, live, repositories, done_debs)
+          held = live.values.select(&:held?).map(&:id)
+          @prepare_id = live["chroot"]&.id || submit_prepare
+          held << @prepare_id unless live["chroot"]
+          ids = {}
+          in_run = pending.to_h { |entry| [entry.source, entry] }
+          pending.each do |entry|
+            adopted = live[entry.source]
+            ids[entry.source] = adopted&.id || submit_build(entry, in_run, ids, repositories, done_debs)
+            held << ids[entry.source] unless adopted
+            @tracked[ids[entry.source]] = entry
+          end
+          @cluster.release(held)
+        rescue BuildError
+          cancel_all # nothing of a refused run stays held in the queue
+          raise
+        end
+
+        def submit_prepare
+          path = File.join(@jobs_dir, "chroot.sh")
+          AtomicFile.write(path, JobScript.render(title: "relspec: prepare the #{@target} chroot (run #{@run_id})",
+                                                  steps: @backend.prepare_steps(@target),
+                                                  work: work_dir("chroot"), result: result_path("chroot")))
+          submit(path, "chroot", File.join(@dir, "logs", "prepare.log"), [])
+        end
+
+        def submit_build(entry, in_run, ids, repositories, done_debs)
+          ancestors = ancestors(entry, in_run)
+          request = Request.new(source: entry.source, version: entry.version, dsc: File.expand_path(@plan.dsc_path(entry)),
+                                target: @target, repositories: repositories,
+                                local_debs: done_debs + ancestors.map { |source| File.join(@dir, "results", source) },
+                                output_dir: File.join(@dir, "results", entry.source), log: log_path(entry.source))
+          work = work_dir(entry.source)
+          path = File.join(@jobs_dir, "#{entry.source}.sh")
+          script = JobScript.render(title: "relspec: build #{entry.source} #{entry.version} for #{@plan.release} " \
+                                           "#{@target} (run #{@run_id})",
+                                    steps: @backend.job_steps(request, work), work: work,
+                                    result: result_path(entry.source), output_dir: request.output_dir,
+                                    prefix: "results/#{entry.source}")
+          AtomicFile.write(path, script)
+          deps = [@prepare_id, *entry.build_depends.filter_map { |dep| ids[dep] }]
+          submit(path, entry.source, request.log, deps)
+        end
+
+        # The build-dependencies of +entry+ built in this run, also
+        # indirect ones (sbuild installs them all from the folders given).
+        def ancestors(entry, in_run, seen = {})
+          entry.build_depends.each do |dep|
+            next if seen[dep] || !in_run[dep]
+
+            seen[dep] = true
+            ancestors(in_run[dep], in_run, seen)
+          end
+          seen.keys.sort
+        end
+
+        def submit(path, source, log, deps)
+          feature = @settings.feature(@target.arch)
+          options = ["--job-name=#{job_name(source)}", "--output=#{log}", "--open-mode=truncate",
+                     "--chdir=#{@jobs_dir}", "--kill-on-invalid-dep=yes", *@settings.sbatch_options,
+                     *(feature ? ["--constraint=#{feature}"] : []),
+                     *(deps.empty? ? [] : ["--dependency=afterok:#{deps.join(':')}"])]
+          @cluster.submit(path, options).tap { |id| (@submitted ||= []) << id }
+        rescue BuildError => e
+          raise unless e.message.include?("Invalid feature")
+
+          raise BuildError, "#{@target}: no node of the Slurm cluster has the feature #{feature} that builds for " \
+                            "#{@target.arch} need (set it on the nodes that build #{@target.arch}, natively or by " \
+                            "emulation, or name their feature with --slurm features.#{@target.arch}=NAME; " \
+                            "docs/scale-out.md)"
+        end
+
+        def poll
+          started = {}
+          until @tracked.empty?
+            sleep @settings.poll_interval
+            queue = @cluster.queue.to_h { |job| [job.id, job] }
+            missing = @tracked.keys.reject { |id| queue[id] }
+            @cluster.accounting(missing).each { |job| queue[job.id] = job }
+            check_prepare(queue)
+            @tracked.sort.each do |id, entry|
+              next unless @tracked.key?(id) # settled as a dependent of a failure in this round
+
+              job = queue[id]
+              if job&.live?
+                @on_start&.call(entry) if job.state == "RUNNING" && !started[id] && (started[id] = true)
+                next
+              end
+              settle(id, entry, job)
+            end
+          end
+        end
+
+        # A failed chroot job fails the whole target: its builds are
+        # cancelled by Slurm (afterok), recorded skipped naming it.
+        def check_prepare(queue)
+          job = queue[@prepare_id]
+          return if @failed["chroot"] || job.nil? || job.live? || job.state == COMPLETED
+
+          @failed["chroot"] = "the #{@target} chroot job failed (#{job.state}, see #{File.join(@dir, 'logs', 'prepare.log')})"
+        end
+
+        def settle(id, entry, job)
+          @tracked.delete(id)
+          result = JobResult.read(result_path(entry.source), @dir)
+          state = job&.state
+          if (state.nil? || state == COMPLETED) && result&.built?
+            mismatch = result.mismatch
+            return report(built(entry, result)) unless mismatch
+
+            return fail(entry, "#{entry.source}: #{mismatch['name']} is not what the job wrote (size or SHA256 " \
+                               "differ; is #{@dir} on a filesystem every node shares?)", result&.duration)
+          end
+          root = failed_root(entry)
+          return skip(entry, skip_reason(root)) if root
+          return skip(entry, not_started) if state == CANCELLED && @stopped
+
+          fail(entry, failure_reason(id, entry, job, result), result&.duration)
+        end
+
+        def built(entry, result)
+          Scheduler::Outcome.new(entry: entry, status: :built, value: result.paths, duration: result.duration)
+        end
+
+        def failure_reason(id, entry, job, result)
+          log = log_path(entry.source)
+          return "#{entry.source}: Slurm job #{id} left the queue without a result, see #{log}" unless job
+
+          exit = result ? result.exit_status : job.exit_code
+          "#{entry.source}: Slurm job #{id} #{job.state}#{exit ? " (exit status #{exit})" : ''}, see #{log}"
+        end
+
+        def failed_root(entry)
+          return @failed["chroot"] if @failed["chroot"]
+
+          dep = entry.build_depends.find { |source| @failed[source] }
+          dep && @failed[dep]
+        end
+
+        def fail(entry, reason, duration)
+          @failed[entry.source] = entry.source
+          report(Scheduler::Outcome.new(entry: entry, status: :failed, reason: reason, duration: duration))
+          skip_dependents
+          stop unless @keep_going
+        end
+
+        def skip(entry, reason)
+          @failed[entry.source] = failed_root(entry) || entry.source
+          report(Scheduler::Outcome.new(entry: entry, status: :skipped, reason: reason))
+        end
+
+        # Reverse dependencies of a failure (transitively, in plan order):
+        # cancelled now rather than when Slurm notices.
+        def skip_dependents
+          @tracked.sort.each do |id, entry|
+            root = failed_root(entry)
+            next unless root
+
+            @tracked.delete(id)
+            cancel([id])
+            @failed[entry.source] = root
+            report(Scheduler::Outcome.new(entry: entry, status: :skipped, reason: skip_reason(root)))
+          end
+        end
+
+        # Without --keep-going nothing new starts after a failure: the jobs
+        # still waiting are cancelled; running ones finish.
+        def stop
+          @stopped = true
+          queue = @cluster.queue.to_h { |job| [job.id, job] }
+          waiting = @tracked.keys.select { |id| queue[id]&.state == "PENDING" }
+          cancel(waiting)
+          waiting.each { |id| skip(@tracked.delete(id), not_started) }
+        end
+
+        def skip_reason(root)
+          root == @failed["chroot"] ? root : "build-dependency #{root} failed"
+        end
+
+        def not_started
+          "not started: the run stopped after #{@failed.select { |source, root| source == root }.keys.sort.join(', ')} " \
+            "failed (--keep-going builds the rest)"
+        end
+
+        def report(outcome)
+          @outcomes << outcome
+          @on_done&.call(outcome)
+        end
+
+        def cancel(ids)
+          @cluster.cancel(ids)
+        rescue BuildError
+          nil # a job that ended meanwhile cannot be cancelled: nothing to do
+        end
+
+        def cancel_all
+          ids = (Array(@submitted) + @tracked.keys + [@prepare_id].compact).uniq.sort
+          return if ids.empty?
+
+          cancel(ids)
+          @notices&.puts("relspec: cancelled the Slurm jobs of run #{@run_id}: #{ids.join(', ')}")
+        end
+
+        def result_path(source)
+          File.join(@jobs_dir, "#{source}.result")
+        end
+
+        def log_path(source)
+          File.join(@dir, "logs", "#{source}.log")
+        end
+
+        # On the node, outside the shared filesystem.
+        def work_dir(source)
+          File.join("/tmp", "relspec-slurm-#{@run_id}-#{source}")
+        end
+      end
+    end
+  end
+end

@@ -1,0 +1,63 @@
+# frozen_string_literal: true
+
+require "fileutils"
+require_relative "../error"
+require_relative "../display_path"
+
+module Relspec
+  module Builder
+    # One relspec process at a time per target folder
+    # (<out>/<release>/<codename>-<arch>): `relspec build` holds it while it
+    # builds the target, `relspec publish` while it reads the target's
+    # build-results.yml and includes what it lists. A second build of the
+    # same target would build every package again and both would claim
+    # them; a publish during a build could read results whose files the
+    # build is replacing. So the second one refuses at once, naming the
+    # holder (from /proc/locks). An exclusive flock: the kernel drops it
+    # when the holder dies, so a killed run never leaves a stale lock.
+    class TargetLock
+      FILE_NAME = ".relspec-target.lock"
+
+      # Another process holds the target.
+      class Busy < Relspec::Error; end
+
+      # Yields while this process holds +dir+'s lock; +doing+ says what for
+      # ("build", "publish") in the refusal the other process gets.
+      def self.hold(dir, doing)
+        FileUtils.mkdir_p(dir)
+        file = File.open(File.join(dir, FILE_NAME), File::RDWR | File::CREAT, 0o644)
+        begin
+          unless file.flock(File::LOCK_EX | File::LOCK_NB)
+            raise Busy, "cannot #{doing} #{DisplayPath.of(dir)}: #{holder(file)} is using it; run again when it has finished"
+          end
+
+          yield
+        ensure
+          file.close
+        end
+      end
+
+      # Who holds +file+'s flock: "relspec build (pid 123)", as far as
+      # /proc tells (it may have ended in between).
+      def self.holder(file)
+        stat = file.stat
+        device = format("%02x:%02x:%d", stat.dev_major, stat.dev_minor, stat.ino)
+        line = File.foreach("/proc/locks").find { |entry| !entry.include?("->") && entry.split[5] == device }
+        pid = line&.split&.fetch(4)&.to_i
+        pid ? "#{command_of(pid)} (pid #{pid})" : "another process"
+      rescue SystemCallError
+        "another process"
+      end
+
+      # "relspec build" from the holder's command line, else its program name.
+      def self.command_of(pid)
+        args = File.binread("/proc/#{pid}/cmdline").split("\0")
+        at = args.index { |arg| File.basename(arg) == "relspec" }
+        at ? "relspec #{args[at + 1]}" : File.basename(args.first.to_s)
+      rescue SystemCallError
+        "a process"
+      end
+      private_class_method :holder, :command_of
+    end
+  end
+end

@@ -1,0 +1,45 @@
+# frozen_string_literal: true
+
+require "json"
+
+module Relspec
+  module Debian
+    # The env.yml installed in a package's prefix, in the format autoproj
+    # package sets read (the rock-osdeps package set loads
+    # /opt/rock/*/<deb>/env.yml of every active package with YAML.load_file
+    # and hands each variable to the workspace's environment):
+    #
+    #   VAR:
+    #     :type: :add_path        # add_path | add | set | add_prefix
+    #     :values: [...]
+    #     :priority: 0            # < 0: applied after the others
+    #
+    # The keys and the type are Ruby symbols because that is what the package
+    # set looks up; Yaml::Writer writes plain data only, so the few lines are
+    # written here. Values are JSON strings (valid YAML, never read as
+    # anything but a string).
+    module EnvironmentFile
+      TYPES = %i[add_path add set add_prefix].freeze
+
+      module_function
+
+      # +variables+: {name => [values]}, in search order, each added as a
+      # path (prepended).
+      def render(variables, type: :add_path, priority: 0)
+        raise ArgumentError, "unknown environment type #{type}" unless TYPES.include?(type)
+
+        out = +"---\n"
+        variables.each do |name, values|
+          next if values.empty?
+
+          out << "#{name}:\n  :type: :#{type}\n  :values:\n"
+          # package sets prepend one value after the other, so the value to
+          # be searched first is written last
+          values.reverse_each { |value| out << "  - #{JSON.generate(value)}\n" }
+          out << "  :priority: #{Integer(priority)}\n"
+        end
+        out
+      end
+    end
+  end
+end

@@ -1,0 +1,53 @@
+# frozen_string_literal: true
+
+require_relative "operating_system"
+require_relative "release_data"
+require_relative "blacklist_file"
+require_relative "index_sources"
+require_relative "selection"
+require_relative "files"
+
+module Relspec
+  module Osdeps
+    # `relspec osdeps select`: the user-side selection. Everything is read
+    # and computed before anything is written, and both files are written
+    # with rename, so a bad blacklist leaves the previous files untouched.
+    module UserSelection
+      # +selection+: the Osdeps::Selection written; +path+: rock-osdeps.osdeps.
+      Result = Struct.new(:selection, :path, keyword_init: true)
+
+      module_function
+
+      # +data+: the folder of releases.yml and the osdeps files; +os+:
+      # autoproj's "names:versions"; +index+: Packages files or repository
+      # URLs for reverse dependencies; +output+: where the files go.
+      # Before anything is written, +differs+ is called with each blacklist
+      # entry the rock-osdeps package set reads differently (and the note
+      # saying how), then +unmatched+ with each entry that matches no package.
+      def call(release:, arch:, os:, data:, blacklist:, index:, trusted:, keyring:, output:, unmatched: nil,
+               differs: nil)
+        os = OperatingSystem.parse(os)
+        mapping = resolve(ReleaseData.new(data).merged(release, arch), os)
+        entries = blacklist ? BlacklistFile.load(blacklist) : []
+        indices = IndexSources.load(index, codename: codename(os), arch: arch, trusted: trusted, keyring: keyring)
+        selection = Selection.new(mapping, indices, entries)
+        entries.each do |entry|
+          note = entry.pattern.difference_note(mapping.keys.sort)
+          differs&.call(entry, note) if note
+        end
+        selection.unmatched.each { |entry| unmatched&.call(entry) }
+        Result.new(selection: selection, path: Files.write_selection(output, selection))
+      end
+
+      # The user's codename, to read repository URLs with.
+      def codename(os)
+        os.versions.find { |version| version.match?(/\A[a-z]+\z/) && version != "default" }
+      end
+
+      def resolve(entries, os)
+        entries.filter_map { |package, entry| (deb = os.resolve(entry)) && [package, deb] }.to_h
+      end
+      private_class_method :codename, :resolve
+    end
+  end
+end

@@ -1,0 +1,51 @@
+# frozen_string_literal: true
+
+module Relspec
+  # The folder compile writes and build and publish read (`--out`, build/ by
+  # default): per release its orig tarball cache, and per target
+  # <out>/<release>/<codename>-<arch>/ with one folder per source package,
+  # plan.yml, build-results.yml, logs/ and results/. The one place these
+  # paths are spelled.
+  class OutputTree
+    PLAN_FILE = "plan.yml"
+    RESULTS_FILE = "build-results.yml"
+
+    attr_reader :out, :release
+
+    def initialize(out, release)
+      @out = out
+      @release = release
+      freeze
+    end
+
+    def release_dir
+      File.join(out, release)
+    end
+
+    # Orig tarballs kept across compiles, by SHA256 (Debian::OrigCache).
+    def orig_cache
+      File.join(release_dir, ".orig")
+    end
+
+    # +target+: a Target.
+    def target_dir(target)
+      File.join(release_dir, target.dir_name)
+    end
+
+    def source_dir(target, deb_name)
+      File.join(target_dir(target), deb_name)
+    end
+
+    def plan_file(target)
+      File.join(target_dir(target), PLAN_FILE)
+    end
+
+    def results_file(target)
+      File.join(target_dir(target), RESULTS_FILE)
+    end
+
+    def logs_dir(target)
+      File.join(target_dir(target), "logs")
+    end
+  end
+end

@@ -1,0 +1,207 @@
+# frozen_string_literal: true
+
+require "spec_helper"
+require "yaml"
+require "digest"
+require_relative "../support/build_release"
+
+# Concurrency and faults of build and publish (issue 24, item 4), with real
+# processes, real builds (host backend) and a real reprepro. The guarantees
+# are those of docs/limits.md ("Concurrent runs and faults"):
+#
+# - one build of a target at a time: a second `relspec build` of it, or a
+#   `relspec publish` of it, refuses at once naming the running build;
+# - a publish that fails on a full disk (a real tmpfs, mounted here: the
+#   tests run as root) or is killed at any reprepro step leaves a
+#   consistent repository (`reprepro check` and `checkpool` clean, every
+#   file a Release lists with its SHA256 and size), and a re-run completes.
+#
+# One release, compiled and built once, serves every example (in order).
+RSpec.describe "relspec build and publish under concurrency and faults", order: :defined do
+  before(:all) do
+    @dir = Dir.mktmpdir("relspec-hostile-concurrency")
+    @release = BuildRelease.new(@dir, "conc")
+    @release.package("base/a1")
+    # Last in the plan and slow: the first build still runs when the
+    # second one and the publish start.
+    @release.package("base/zslow", cmake: "execute_process(COMMAND sleep 4)")
+    @release.compile(spec: "repository: { path: ../repos/conc, trusted: true }\n")
+    @repos = File.join(@dir, "repos")
+    FileUtils.mkdir_p(@repos)
+  end
+
+  after(:all) { FileUtils.rm_rf(@dir) }
+
+  let(:repository) { File.join(@repos, "conc") }
+  let(:spec) { "specs/conc.yml" }
+
+  def wait_for(what, seconds: 120)
+    deadline = Process.clock_gettime(Process::CLOCK_MONOTONIC) + seconds
+    until yield
+      raise "#{what} did not happen within #{seconds} s" if Process.clock_gettime(Process::CLOCK_MONOTONIC) > deadline
+
+      sleep(0.05)
+    end
+  end
+
+  # Runs relspec without the memory report (a killed child has none);
+  # [status, stderr].
+  def spawned(*args, env: {})
+    reader, writer = IO.pipe
+    pid = Process.spawn({ "XDG_CACHE_HOME" => CliRunner::CACHE }.merge(env), RbConfig.ruby, CliRunner::EXE, *args,
+                        chdir: @dir, out: File::NULL, err: writer, in: File::NULL)
+    writer.close
+    message = reader.read
+    [Process.wait2(pid).last, message]
+  end
+
+  def reprepro(*args)
+    Open3.capture2e("reprepro", "--basedir", repository, *args)
+  end
+
+  # The repository is what reprepro and apt expect: its database agrees
+  # with the pool, and every file a Release lists has the bytes listed.
+  def expect_consistent
+    return unless File.directory?(File.join(repository, "db"))
+
+    %w[check checkpool].each do |command|
+      output, status = reprepro(command)
+      expect(status).to be_success, "reprepro #{command}: #{output}"
+    end
+    Dir.glob(File.join(repository, "dists", "*", "Release")).each do |release|
+      listed = File.read(release)[/^SHA256:\n((?: .*\n)*)/, 1].to_s.lines.map(&:split)
+      expect(listed).not_to be_empty
+      listed.each do |sha256, size, name|
+        file = File.join(File.dirname(release), name)
+        next unless File.exist?(file) # reprepro lists uncompressed indices it does not keep
+
+        expect([Digest::SHA256.file(file).hexdigest, File.size(file).to_s]).to eq([sha256, size]), "#{release}: #{name}"
+      end
+    end
+  end
+
+  def expect_published
+    output, status = reprepro("--list-format", "${package}\n", "list", "bookworm")
+    expect(status).to be_success, output
+    expect(output.lines.map(&:chomp).uniq.sort).to eq([@release.source("base/a1"), @release.source("base/zslow")])
+  end
+
+  # A publish after a fault: it runs to its end and leaves everything
+  # published in a consistent repository.
+  def expect_publish_completes
+    status, message = spawned("publish", spec, "--out", "out")
+    expect(status.exitstatus).to eq(0), message
+    expect_consistent
+    expect_published
+  end
+
+  it "refuses a second build and a publish of a target while a build of it runs, naming the build" do
+    pid = Process.spawn({ "XDG_CACHE_HOME" => CliRunner::CACHE }, RbConfig.ruby, CliRunner::EXE, "build", spec,
+                        "--out", "out", "--backend", "host", chdir: @dir, out: File::NULL, err: File::NULL)
+    slow_log = File.join(@release.target_dir, "logs", "#{@release.source('base/zslow')}.log")
+    wait_for("the first build reaching base/zslow") { File.exist?(slow_log) }
+    busy = "out/conc/bookworm-amd64: relspec build (pid #{pid}) is using it; run again when it has finished"
+
+    second = relspec("build", spec, "--out", "out", "--backend", "host", chdir: @dir)
+    expect([second.exit_code, second.stderr]).to eq([1, "relspec: error: cannot build #{busy}\n"])
+    publish = relspec("publish", spec, "--out", "out", chdir: @dir)
+    expect([publish.exit_code, publish.stderr]).to eq([1, "relspec: error: cannot publish #{busy}\n"])
+    expect(File.exist?(repository)).to be(false) # refused before touching the repository
+
+    expect(Process.wait2(pid).last).to be_success
+    statuses = YAML.safe_load(File.read(File.join(@release.target_dir, "build-results.yml")))["packages"].values
+    expect(statuses.map { |package| package["status"] }).to eq(%w[built built])
+  end
+
+  # The cases that were exit 70 (files: an integer, null or a list of
+  # lists), for build (resume) and publish, and a damaged plan.yml: refused
+  # at the line, nothing built or published, the files left as they were.
+  it "refuses a damaged build-results.yml in build and publish, and a damaged plan.yml in build, at the line" do
+    results = File.join(@release.target_dir, "build-results.yml")
+    plan = File.join(@release.target_dir, "plan.yml")
+    pristine = File.read(results)
+    text = File.read(plan)
+    first_files = /^    files:\n(    [- ] .*\n)+/ # the first package's (rock-conc-base-a1) list
+    line = pristine.lines.index("    files:\n") + 1
+    {
+      "    files: 7\n" => [line, "packages.#{@release.source('base/a1')}.files must be a list of files"],
+      "    files:\n" => [line, "a built package lists the files it produced"],
+      "    files:\n    - [a, b]\n" => [line + 1, "packages.#{@release.source('base/a1')}.files.0 must be a mapping of name, sha256 and size"]
+    }.each do |damage, (at, message)|
+      damaged = pristine.sub(first_files, damage)
+      expect(damaged).not_to eq(pristine)
+      File.write(results, damaged)
+      %w[build publish].each do |command|
+        run = relspec(command, spec, "--out", "out", *(command == "build" ? %w[--backend host] : []), chdir: @dir)
+        expect([run.exit_code, run.stdout]).to eq([1, ""]), run.stderr
+        expect(run.stderr).to start_with("out/conc/bookworm-amd64/build-results.yml:#{at}:")
+          .and(include("error[build-results]: cannot read the build results: #{message}"))
+      end
+      expect(File.exist?(repository)).to be(false)
+    end
+    File.write(results, pristine)
+    File.write(plan, text.sub(/dsc: \S+/, "dsc: /etc/passwd"))
+    run = relspec("build", spec, "--out", "out", "--backend", "host", chdir: @dir)
+    expect([run.exit_code, run.stderr]).to match([1, %r{\Aout/conc/bookworm-amd64/plan.yml:\d+:\d+: error\[build-plan\]: cannot read the build plan: builds\.0\.dsc "/etc/passwd" is not a plain path}])
+    expect(File.read(results)).to eq(pristine)
+  ensure
+    File.write(results, pristine)
+    File.write(plan, text)
+  end
+
+  it "keeps the repository consistent when the disk fills during publish, and completes once there is space" do
+    system("mount", "-t", "tmpfs", "-o", "size=1m", "relspec-full", @repos, exception: true)
+    begin
+      filler = File.join(@repos, "filler")
+      failures = [4096, 64 * 1024].map do |free|
+        FileUtils.rm_rf(repository)
+        File.open(filler, "wb") do |file|
+          file.write("\0" * 65_536) while true # rubocop:disable Lint/LiteralAsCondition
+        rescue Errno::ENOSPC
+          file.truncate([file.size - free, 0].max)
+        end
+        status, failure = spawned("publish", spec, "--out", "out")
+        expect(status.exitstatus).to eq(1), failure
+        expect(failure).to start_with("relspec: error: ").and(include("No space left on device"))
+        File.delete(filler)
+        expect_consistent
+        expect_publish_completes
+        failure
+      end
+      # at least one of the fills stopped reprepro itself, not only relspec's own writes
+      expect(failures.join).to include("reprepro")
+    ensure
+      system("umount", @repos)
+    end
+  end
+
+  # A fault-injecting wrapper around reprepro (first in PATH): its k-th call
+  # starts the real reprepro, then kills it and relspec with SIGKILL, for
+  # every k until a publish runs to its end.
+  it "keeps the repository consistent when publish is killed at any reprepro step, and a re-run completes" do
+    FileUtils.rm_rf(repository)
+    bin = File.join(@dir, "killer-bin")
+    FileUtils.mkdir_p(bin)
+    File.write(File.join(bin, "reprepro"), <<~SH)
+      #!/bin/sh
+      count=$(( $(cat "$KILL_COUNTER" 2>/dev/null || echo 0) + 1 ))
+      echo "$count" > "$KILL_COUNTER"
+      [ "$count" = "$KILL_AT" ] || exec /usr/bin/reprepro "$@"
+      /usr/bin/reprepro "$@" & sleep 0.05; kill -9 $! $PPID
+    SH
+    File.chmod(0o755, File.join(bin, "reprepro"))
+    counter = File.join(@dir, "reprepro-calls")
+    killed = (1..20).take_while do |k|
+      File.write(counter, "0")
+      status, message = spawned("publish", spec, "--out", "out",
+                                env: { "PATH" => "#{bin}:#{ENV.fetch('PATH')}", "KILL_AT" => k.to_s, "KILL_COUNTER" => counter })
+      expect_consistent
+      next false if File.read(counter).to_i < k # ran to its end before the k-th call
+
+      expect(status.termsig).to eq(9), message
+      true
+    end
+    expect(killed.size).to be >= 3
+    expect_publish_completes
+  end
+end

@@ -1,0 +1,204 @@
+# frozen_string_literal: true
+
+require "spec_helper"
+require "json"
+require "yaml"
+require_relative "../../support/build_release"
+require_relative "../../support/slurm_cluster"
+
+# `relspec build --engine slurm` on a real one-node Slurm cluster (munged,
+# slurmctld, slurmd of Debian's slurm-wlm, in a private network namespace;
+# SlurmCluster), building small real packages compiled from a generated
+# workspace. relspec runs in the cluster's namespace, as on a login node.
+RSpec.describe "relspec build --engine slurm", order: :defined do
+  before(:all) do
+    @cluster = SlurmCluster.start(features: %w[amd64])
+    @dir = Dir.mktmpdir("relspec-build-slurm")
+    @release = BuildRelease.new(@dir, "sl")
+    # Three layers, one failure with two levels of reverse dependencies.
+    @release.package("base/a")
+    @release.package("base/b")
+    @release.package("base/c", dependencies: ["base/a"])
+    @release.package("base/d", dependencies: %w[base/a base/b])
+    @release.package("base/e", dependencies: %w[base/c base/d])
+    @release.package("base/broken", cmake: 'message(FATAL_ERROR "this package does not build")')
+    @release.package("base/user", dependencies: %w[base/broken base/a])
+    @release.package("base/user2", dependencies: ["base/user"])
+    @release.compile
+  end
+
+  after(:all) do
+    @cluster&.stop
+    FileUtils.rm_rf(@dir) if @dir
+  end
+
+  def build(*args, dir: @dir, spec: "specs/sl.yml")
+    @cluster.relspec("build", spec, "--out", "out", "--backend", "host", "--engine", "slurm",
+                     "--slurm", "poll_interval=0.3", *args, chdir: dir)
+  end
+
+  def results(release = @release)
+    YAML.safe_load(File.read(File.join(release.target_dir, "build-results.yml")))
+  end
+
+  # The .debs' SHA256 per source (.buildinfo and .changes name the build
+  # folder and date, so they differ between any two builds).
+  def deb_digests(packages)
+    packages.transform_values do |record|
+      Array(record["files"]).select { |file| file["name"].end_with?(".deb") }.to_h { |file| [file["name"], file["sha256"]] }
+    end
+  end
+
+  def jobs_named(pattern)
+    @cluster.jobs.select { |job| job["name"].match?(pattern) }
+  end
+
+  it "builds a layered graph as the local scheduler does, skipping exactly the failure's reverse dependencies" do
+    local = relspec("build", "specs/sl.yml", "--out", "out", "--backend", "host", "--jobs", "2", "--keep-going",
+                    chdir: @dir)
+    expect(local.exit_code).to eq(1), local.stderr
+    expected = results.fetch("packages")
+    FileUtils.rm_rf(Dir.glob(File.join(@release.target_dir, "{results,logs,build-results.yml}")))
+
+    run = build("--keep-going")
+    expect(run.exit_code).to eq(1), run.stdout + run.stderr + @cluster.logs
+    packages = results.fetch("packages")
+    expect(results.fetch("backend")).to eq("host")
+    expect(packages.transform_values { |r| [r["status"], r["version"]] })
+      .to eq(expected.transform_values { |r| [r["status"], r["version"]] })
+    expect(deb_digests(packages)).to eq(deb_digests(expected))
+    broken = @release.source("base/broken")
+    expect(packages.select { |_, r| r["status"] != "built" }.keys)
+      .to contain_exactly(broken, @release.source("base/user"), @release.source("base/user2"))
+    expect(packages[broken]["reason"]).to match(%r{\A#{broken}: Slurm job \d+ FAILED \(exit status 2\), see logs/#{broken}\.log\z})
+    expect(File.read(File.join(@release.target_dir, packages[broken]["log"]))).to include("this package does not build")
+    expect(packages[@release.source("base/user2")]["reason"]).to eq("build-dependency #{broken} failed")
+    expect(packages[@release.source("base/user")]).not_to include("files", "duration")
+    # The files are where the results say, with those bytes.
+    packages.each_value do |record|
+      Array(record["files"]).each do |file|
+        expect(Digest::SHA256.file(File.join(@release.target_dir, file["name"])).hexdigest).to eq(file["sha256"])
+      end
+    end
+
+    # One job per package plus the chroot job, named release/target/source@run,
+    # each build started only after the jobs of its build-dependencies ended.
+    jobs = jobs_named(%r{\Asl/bookworm-amd64/}).to_h { |job| [job["name"].split("/").last.split("@").first, job] }
+    expect(jobs.keys).to contain_exactly("chroot", *packages.keys)
+    expect(jobs.values.map { |job| job["name"].split("@").last }.uniq.size).to eq(1)
+    {
+      "base/c" => %w[base/a], "base/d" => %w[base/a base/b], "base/e" => %w[base/c base/d]
+    }.each do |package, deps|
+      job = jobs.fetch(@release.source(package))
+      deps.each do |dep|
+        expect(job["start_time"]).to be >= jobs.fetch(@release.source(dep))["end_time"]
+      end
+      expect(job["start_time"]).to be >= jobs.fetch("chroot")["end_time"]
+    end
+    expect(jobs.fetch(@release.source("base/user"))["job_state"]).to eq("CANCELLED")
+  end
+
+  it "adopts the jobs of a killed run instead of submitting them again, and loses none" do
+    release = BuildRelease.new(File.join(@dir, "kill"), "slk")
+    release.package("base/first", cmake: "execute_process(COMMAND sleep 4)")
+    release.package("base/second", dependencies: ["base/first"])
+    release.package("base/third", dependencies: ["base/second"])
+    release.compile
+    env, *command = @cluster.relspec_command("build", "specs/slk.yml", "--out", "out", "--backend", "host",
+                                             "--engine", "slurm", "--slurm", "poll_interval=0.3", "--quiet")
+    pid = Process.spawn(env, *command, chdir: release.dir, out: File::NULL, err: File::NULL)
+    first = %r{\Aslk/bookworm-amd64/#{release.source('base/first')}@}
+    deadline = Process.clock_gettime(Process::CLOCK_MONOTONIC) + 60
+    sleep 0.2 until jobs_named(first).any? { |job| job["job_state"] == "RUNNING" } ||
+                    Process.clock_gettime(Process::CLOCK_MONOTONIC) > deadline
+    Process.kill("KILL", pid)
+    Process.wait(pid)
+    expect(jobs_named(first).map { |job| job["job_state"] }).to eq(["RUNNING"])
+
+    run = @cluster.relspec("build", "specs/slk.yml", "--out", "out", "--backend", "host", "--engine", "slurm",
+                           "--slurm", "poll_interval=0.3", chdir: release.dir)
+    expect(run.exit_code).to eq(0), run.stdout + run.stderr
+    expect(results(release).fetch("packages").values.map { |record| record["status"] }).to eq(%w[built built built])
+    # Each package ran in exactly one job: the second relspec adopted them.
+    %w[base/first base/second base/third].each do |package|
+      jobs = jobs_named(%r{\Aslk/bookworm-amd64/#{release.source(package)}@})
+      expect(jobs.map { |job| job["job_state"] }).to eq(["COMPLETED"]), package
+    end
+
+    # Nothing left to do: no job at all.
+    count = @cluster.jobs.size
+    again = @cluster.relspec("build", "specs/slk.yml", "--out", "out", "--backend", "host", "--engine", "slurm",
+                             chdir: release.dir)
+    expect(again.stdout).to include("0 built, 3 already built")
+    expect(@cluster.jobs.size).to eq(count)
+  end
+
+  it "cancels the run's jobs on Ctrl-C and says so" do
+    release = BuildRelease.new(File.join(@dir, "int"), "sli")
+    release.package("base/long", cmake: "execute_process(COMMAND sleep 30)")
+    release.package("base/after", dependencies: ["base/long"])
+    release.compile
+    env, *command = @cluster.relspec_command("build", "specs/sli.yml", "--out", "out", "--backend", "host",
+                                             "--engine", "slurm", "--slurm", "poll_interval=0.3", "--quiet")
+    stderr = File.join(release.dir, "stderr")
+    pid = Process.spawn(env, *command, chdir: release.dir, out: File::NULL, err: stderr)
+    long = %r{\Asli/bookworm-amd64/#{release.source('base/long')}@}
+    deadline = Process.clock_gettime(Process::CLOCK_MONOTONIC) + 60
+    sleep 0.2 until jobs_named(long).any? { |job| job["job_state"] == "RUNNING" } ||
+                    Process.clock_gettime(Process::CLOCK_MONOTONIC) > deadline
+    Process.kill("INT", pid)
+    _, status = Process.wait2(pid)
+    expect(status.exitstatus).to eq(130)
+    expect(File.read(stderr)).to match(/\Arelspec: cancelled the Slurm jobs of run \h{12}: \d+(, \d+)*\nrelspec: interrupted\n\z/)
+    states = jobs_named(%r{\Asli/bookworm-amd64/rock}).map { |job| job["job_state"] }
+    expect(states).to eq(%w[CANCELLED CANCELLED])
+  end
+
+  it "refuses at submit an architecture no node has, leaving no job behind" do
+    File.write(@release.spec_path, File.read(@release.spec_path).sub("bookworm: [amd64]", "bookworm: [amd64, arm64]"))
+    compile = relspec("compile", "specs/sl.yml", "--out", "out", "--no-check", chdir: @dir)
+    expect(compile.exit_code).to eq(0), compile.stderr
+    run = build("--target", "bookworm/arm64")
+    expect(run.exit_code).to eq(1)
+    expect(run.stderr).to eq("relspec: error: bookworm/arm64: no node of the Slurm cluster has the feature arm64 " \
+                             "that builds for arm64 need (set it on the nodes that build arm64, natively or by " \
+                             "emulation, or name their feature with --slurm features.arm64=NAME; docs/scale-out.md)\n")
+    expect(jobs_named(%r{\Asl/bookworm-arm64/})).to eq([])
+  end
+
+  it "refuses a cluster setting it does not know, naming the file and line" do
+    FileUtils.mkdir_p(File.join(@dir, ".relspec"))
+    File.write(File.join(@dir, ".relspec", "slurm.yml"), "partition: build\npartiton: typo\n")
+    run = build
+    expect(run.exit_code).to eq(1)
+    expect(run.stderr).to start_with("relspec: error: #{File.join(@dir, '.relspec', 'slurm.yml')}:2: " \
+                                     "error[slurm-settings]: unknown setting \"partiton\"")
+  ensure
+    FileUtils.rm_rf(File.join(@dir, ".relspec"))
+  end
+
+  it "builds a real sbuild chain through Slurm, the chroot made by the target's chroot job" do
+    release = BuildRelease.new(File.join(@dir, "sbuild"), "sls")
+    release.package("base/one")
+    release.package("base/two", dependencies: ["base/one"])
+    release.compile
+    # the chroot tarballs of the test run (made by the first sbuild test, or here by the chroot job)
+    shared = File.join(CliRunner::CACHE, "relspec")
+    run = @cluster.relspec("build", "specs/sls.yml", "--out", "out", "--backend", "sbuild", "--engine", "slurm",
+                           "--slurm", "poll_interval=0.5", "--slurm", "shared_folder=#{shared}", chdir: release.dir,
+                           env: @cluster.with_network(%w[sbuild mmdebstrap]))
+    expect(run.exit_code).to eq(0), run.stdout + run.stderr
+    packages = results(release).fetch("packages")
+    expect(results(release).fetch("backend")).to eq("sbuild")
+    expect(packages.values.map { |record| record["status"] }).to eq(%w[built built])
+    expect(File.size(File.join(shared, "chroots", "bookworm-amd64.tar.zst"))).to be > 10_000_000
+    script = File.read(Dir.glob(File.join(release.target_dir, "slurm", "*", "#{release.source('base/two')}.sh")).first)
+    # the sbuild backend's own command line, given the first package's results folder
+    expect(script).to include("sbuild --chroot-mode=unshare --chroot=#{shared}/chroots/bookworm-amd64.tar.zst",
+                              "--extra-package=#{release.target_dir}/results/#{release.source('base/one')}")
+    two = File.read(File.join(release.target_dir, "logs", "#{release.source('base/two')}.log"))
+    # sbuild installed the build-dependency the job before built.
+    expect(two).to match(/Unpacking #{Regexp.escape(release.source('base/one'))} /)
+    expect(File.read(File.join(release.target_dir, "logs", "prepare.log"))).to include("$ if [ ! -f ")
+  end
+end

@@ -1,0 +1,109 @@
+# frozen_string_literal: true
+
+require "spec_helper"
+require "relspec/catalog/release_catalog"
+require_relative "../../support/real_rock_workspace"
+require_relative "../../support/gem_builder"
+
+# The REAL Rock package sets (rock.core, which imports orocos.toolchain), read
+# as autoproj reads them: what the package sets decide while loading
+# (automatic exclusions, post_import blocks) reaches the catalog. One shared
+# workspace for the run (RealRockWorkspace.shared): nothing here changes it.
+RSpec.describe "the real Rock package sets" do
+  before(:all) do
+    need_fixture(RealRockWorkspace.available?, RealRockWorkspace.skip_reason)
+    @workspace = RealRockWorkspace.shared
+  end
+
+  def spec_text(select)
+    <<~YAML
+      release: rock
+      workspace: #{@workspace.root}
+      select: [#{select.join(', ')}]
+      targets: { bookworm: [amd64] }
+    YAML
+  end
+
+  def catalog_of(root = @workspace.root)
+    with_specs("rock" => spec_text(%w[typelib]).sub(@workspace.root, root)) do |dir|
+      Relspec::Catalog::ReleaseCatalog.load(Relspec::ReleaseSpec.resolve(File.join(dir, "rock.yml"))).catalog
+    end
+  end
+
+  it "honours rock.core's automatic exclusion of ocl (USE_OCL is false)" do
+    expect(catalog_of.excluded).to include("ocl")
+    with_specs("rock" => spec_text(%w[ocl])) do |dir|
+      run = relspec("plan", File.join(dir, "rock.yml"))
+      expect(run.exit_code).to eq(1)
+      expect(run.stderr).to include("error[excluded-package]").and include("ocl is selected but excluded")
+    end
+  end
+
+  it "runs the post_import blocks: typelib depends on the castxml importer rock.core chooses" do
+    os = catalog_of.package("typelib").os_dependencies_for("bookworm")
+    expect(os.apt).to include("castxml")
+    expect(os.apt).not_to include("gccxml")
+  end
+
+  it "runs them without writing into the workspace (rtt's block deletes a generated file)" do
+    Dir.mktmpdir("relspec-real-rock-copy") do |base|
+      copy = File.join(base, "workspace")
+      FileUtils.cp_r(@workspace.root, copy)
+      stale = File.join(copy, "src", "tools", "rtt", "rtt", "plugin", "pluginpath.cpp")
+      File.write(stale, "// left by an old RTT build\n")
+      expect(catalog_of(copy).package("rtt")).not_to be_nil
+      expect(File.read(stale)).to eq("// left by an old RTT build\n")
+    end
+  end
+
+  # typelib and utilrb need the gem facets, which bookworm lacks: it is
+  # packaged from gem_source. The facets here is a stand-in whose runtime
+  # dependencies are the kinds the real layout's gems have: Ruby's default
+  # gems (bookworm's libruby3.1 provides ruby-date, ruby-logger, … at their
+  # versions), gems Debian names irregularly (rake, yard, ruby-concurrent)
+  # and a version-constrained one Debian has (ruby-pastel 0.8.0). None of
+  # them may become a package or a false note; this machine's apt lists
+  # stand for bookworm's archive.
+  it "takes Ruby's default gems and Debian's irregularly named gems from the distribution" do
+    with_specs("rock" => <<~YAML) do |dir, root|
+      release: rock
+      workspace: #{@workspace.root}
+      select: [typelib, tools/metaruby]
+      targets: { bookworm: [amd64] }
+      distributions: { bookworm: { archive: { host: true } } }
+      gem_source: ../gems
+    YAML
+      GemBuilder.build(File.join(root, "gems"), "facets", "3.1.0",
+                       dependencies: { "pastel" => "~> 0.8", "date" => ">= 0", "io-console" => ">= 0.5", "logger" => ">= 1.4",
+                                       "rake" => ">= 12.0", "yard" => ">= 0.9", "concurrent-ruby" => "~> 1.1" })
+      run = relspec("plan", File.join(dir, "rock.yml"))
+      expect(run.exit_code).to eq(0), run.stderr
+      expect(run.stdout).to start_with("rock: 4 packages on 1 targets")
+      built = run.stdout[/^builds on bookworm\/amd64:\n(.*?)\n\n/m, 1].lines.grep(/^  \S/).map { |line| line.split.first }
+      expect(built).to eq(%w[facets tools/metaruby typelib utilrb])
+      expect(run.stdout).to include("the bookworm archive has no ruby-facets: gem facets is packaged here")
+      expect(run.stdout).not_to include("lacks")
+    end
+  end
+
+  it "reports every gem missing from an offline gem_source in one run, with how to fetch it" do
+    with_specs("rock" => <<~YAML) do |dir, root|
+      release: rock
+      workspace: #{@workspace.root}
+      select: [typelib, tools/orocos.rb]
+      leave_out: [{ match: tools/pocolog, reason: not among the repositories of ../shared }]
+      targets: { bookworm: [amd64] }
+      distributions: { bookworm: { archive: { host: true } } }
+      gem_source: ../gems
+    YAML
+      FileUtils.mkdir_p(File.join(root, "gems"))
+      run = relspec("plan", File.join(dir, "rock.yml"))
+      expect(run.exit_code).to eq(1)
+      # bookworm lacks facets and rice, and has rake-compiler only at 1.2.1 (Rock asks for <0.9.0)
+      expect(run.stderr.scan(/error\[gem-unresolvable\]: no version of gem (\S+)/).flatten).to eq(%w[facets rake-compiler rice])
+      expect(run.stderr).to include("hint: fetch it into ../gems: `gem fetch rake-compiler -v '< 0.9.0'`; with the gems " \
+                                    "it needs: `gem install --install-dir <dir> --no-document rake-compiler -v '< 0.9.0'`")
+      expect(run.stderr).not_to match(/\.rb:\d+:in /)
+    end
+  end
+end

@@ -1,0 +1,139 @@
+# frozen_string_literal: true
+
+require "fileutils"
+require "open3"
+require "autoproj"
+
+# An autoproj workspace made, offline, from the REAL Rock package sets in
+# ../shared/fixtures/rock-repos: rock.core (which imports orocos.toolchain)
+# with the layout of rock-core/buildconf (`rock.core`). The package sets are
+# cloned where autoproj keeps remote package sets (.autoproj/remotes/<id>),
+# so autoproj loads them as it would after `autoproj update`; the packages
+# whose repositories are bundled are cloned into src/ and pointed at their
+# bundles through autoproj/overrides.yml. Nothing here imitates the package
+# sets: what relspec reads is what Rock users load.
+#
+# Building it takes a few seconds (20 clones): tests share one instance per
+# run (RealRockWorkspace.shared) and must not change it.
+class RealRockWorkspace
+  BUNDLES = File.expand_path("../../../shared/fixtures/rock-repos", __dir__)
+
+  PACKAGE_SETS = {
+    "rock-core/package_set" => "rock-core-package_set",
+    "orocos-toolchain/autoproj" => "orocos-toolchain-package_set"
+  }.freeze
+
+  # autoproj name => [bundle, folder under src/ (after rock.core's move_package)]
+  PACKAGES = {
+    "base/cmake" => ["base-cmake", "base/cmake"], "base/logging" => ["base-logging", "base/logging"],
+    "base/types" => ["base-types", "base/types"], "base/numeric" => ["base-numeric", "base/numeric"],
+    "base/orogen/std" => ["base-orogen-std", "base/orogen/std"],
+    "base/orogen/types" => ["base-orogen-types", "base/orogen/types"],
+    "utilrb" => ["utilrb", "tools/utilrb"], "utilmm" => ["utilmm", "tools/utilmm"],
+    "log4cpp" => ["log4cpp", "tools/log4cpp"], "typelib" => ["tools-typelib", "tools/typelib"],
+    "rtt" => ["rtt", "tools/rtt"], "rtt_typelib" => ["tools-rtt_typelib", "tools/rtt_typelib"],
+    "orogen" => ["tools-orogen", "tools/orogen"], "tools/metaruby" => ["tools-metaruby", "tools/metaruby"],
+    "tools/orogen_metadata" => ["tools-orogen_metadata", "tools/orogen_metadata"],
+    "tools/orocos.rb" => ["tools-orocosrb", "tools/orocos.rb"],
+    "tools/service_discovery" => ["tools-service_discovery", "tools/service_discovery"],
+    "stdint_typekit" => ["stdint_typekit", "stdint_typekit"]
+  }.freeze
+
+  def self.available?
+    (PACKAGE_SETS.values + PACKAGES.values.map(&:first)).all? { |bundle| File.file?(bundle_path(bundle)) }
+  end
+
+  def self.skip_reason
+    "the real Rock package sets are not in #{BUNDLES} (../shared/fixtures/rock-repos)"
+  end
+
+  def self.bundle_path(bundle)
+    File.join(BUNDLES, "#{bundle}.bundle")
+  end
+
+  # One workspace per test run, made on first use and removed at exit.
+  def self.shared
+    @shared ||= begin
+      base = Dir.mktmpdir("relspec-real-rock")
+      at_exit { FileUtils.rm_rf(base) }
+      new(base).tap(&:create)
+    end
+  end
+
+  attr_reader :root
+
+  def initialize(base)
+    @root = File.join(File.expand_path(base), "workspace")
+  end
+
+  def create
+    write(".autoproj/config.yml", <<~YAML)
+      source: src
+      osdeps_mode: all
+      apt_dpkg_update: false
+      interactive: false
+      USE_OCL: false
+      ROCK_SELECTED_FLAVOR: master
+    YAML
+    write("autoproj/manifest", <<~YAML)
+      package_sets:
+        - github: rock-core/package_set
+      layout:
+        - rock.core
+    YAML
+    # as rock-core/buildconf's init.rb: the `github:` shorthand of the manifest
+    write("autoproj/init.rb", "require 'autoproj/git_server_configuration'\n")
+    # orocos.toolchain defines ruby-dev in orocos.osdeps-ruby30 and -ruby32
+    # (as `ignore`) but has no -ruby31 file: on bookworm's Ruby autoproj
+    # stops at binding_of_caller's ruby-dev. A Rock maintainer adds the
+    # missing definition in the workspace configuration, as here.
+    # (autoproj reads <name>.osdeps-ruby31 beside an existing <name>.osdeps)
+    write("autoproj/workspace.osdeps", "{}\n")
+    write("autoproj/workspace.osdeps-ruby31", "ruby-dev:\n  default: ignore\n")
+    write("autoproj/overrides.yml", overrides)
+    PACKAGE_SETS.each { |github, bundle| git("clone", "-q", self.class.bundle_path(bundle), remote_dir(github)) }
+    PACKAGES.each do |name, (bundle, dir)|
+      git("clone", "-q", "--mirror", self.class.bundle_path(bundle), repository(name))
+      git("clone", "-q", "-o", "autobuild", repository(name), File.join("src", dir))
+    end
+    root
+  end
+
+  def source_dir(name)
+    File.join(root, "src", PACKAGES.fetch(name).last)
+  end
+
+  private
+
+  def write(path, content)
+    full = File.join(root, path)
+    FileUtils.mkdir_p(File.dirname(full))
+    File.write(full, content)
+  end
+
+  # Where autoproj looks for a remote package set it has checked out:
+  # .autoproj/remotes/<repository id with non-word characters as _>, the id
+  # autoproj's GITHUB server configuration gives (`github:/<owner>/<name>.git`).
+  def remote_dir(github)
+    vcs = Autoproj::VCSDefinition.from_raw({ type: "git", url: "https://github.com/#{github}.git",
+                                             repository_id: "github:/#{github}.git" })
+    File.join(root, ".autoproj", "remotes", vcs.create_autobuild_importer.repository_id.gsub(/[^\w]/, "_"))
+  end
+
+  def repository(name)
+    File.join(root, "repositories", "#{name.tr('/', '_')}.git")
+  end
+
+  def overrides
+    entries = PACKAGES.keys.map do |name|
+      "  - #{name}:\n      type: git\n      url: $AUTOPROJ_ROOT/repositories/#{name.tr('/', '_')}.git\n"
+    end
+    "overrides:\n#{entries.join}"
+  end
+
+  def git(*args)
+    output, status = Open3.capture2e({ "GIT_CONFIG_NOSYSTEM" => "1", "GIT_CONFIG_GLOBAL" => File::NULL },
+                                     "git", *args, chdir: root)
+    raise "git #{args.join(' ')} failed: #{output}" unless status.success?
+  end
+end

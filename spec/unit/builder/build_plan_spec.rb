@@ -1,0 +1,63 @@
+# frozen_string_literal: true
+
+require "spec_helper"
+require "tmpdir"
+require "relspec/builder/build_plan"
+
+# plan.yml, compile's writer and build's strict reader in one class (issue
+# 24): what is written reads back the same, and each damage is refused at
+# its line with the field named.
+RSpec.describe Relspec::Builder::BuildPlan do
+  entry = described_class::Entry
+  let(:entries) do
+    [entry.new(package: "base/a", source: "rock-r-base-a", version: "1.0-1~bookworm", dsc: "rock-r-base-a/a.dsc", build_depends: []),
+     entry.new(package: "base/b", source: "rock-r-base-b", version: "2.0-1~bookworm", dsc: "rock-r-base-b/b.dsc",
+               build_depends: ["rock-r-base-a"])]
+  end
+
+  def written(entries)
+    Dir.mktmpdir do |dir|
+      expect(described_class.write(dir, release: "r", target: "bookworm/amd64", entries: entries)).to be(true)
+      expect(described_class.write(dir, release: "r", target: "bookworm/amd64", entries: entries)).to be(false)
+      return File.read(File.join(dir, "plan.yml"))
+    end
+  end
+
+  def error_of(text)
+    described_class.parse(text, dir: "out/r/bookworm-amd64")
+    nil
+  rescue Relspec::InvalidInput => e
+    e.diagnostics.map(&:to_s).join("\n")
+  end
+
+  it "reads back what it writes, in order" do
+    plan = described_class.parse(written(entries), dir: "out/r/bookworm-amd64")
+    expect([plan.release, plan.target, plan.codename, plan.arch]).to eq(["r", "bookworm/amd64", "bookworm", "amd64"])
+    expect(plan.entries.map(&:to_h)).to eq(entries.map(&:to_h))
+    expect(plan.dsc_path(plan.entries.first)).to eq("out/r/bookworm-amd64/rock-r-base-a/a.dsc")
+  end
+
+  {
+    "builds as a mapping" => [[/builds:\n(.|\n)*/, "builds: {a: 1}\n"], 4, "builds must be a list of builds"],
+    "a build as text" => [[/-\n  package: base\/a\n(  .*\n)*?(?=-)/, "- oops\n"], 5, "builds.0 must be a mapping"],
+    "a dsc outside the folder" => [["dsc: rock-r-base-a/a.dsc", "dsc: ../../etc/passwd"], 9, "is not a plain path"],
+    "a source that is no name" => [["source: rock-r-base-a\n", "source: ../x\n"], 7, 'invalid source name "../x"'],
+    "an invalid version" => [['"2.0-1~bookworm"', '"2.0 beta"'], 14, 'invalid Debian version "2.0 beta"'],
+    "a dependency not listed before" => [["- rock-r-base-a", "- rock-r-base-z"], 17, '"rock-r-base-z" is not a source listed before'],
+    "build_depends as a number" => [["build_depends: []", "build_depends: 3"], 10, "must be a list of source names"],
+    "an unknown key" => [["release: r", "release: r\nextra: 1"], 3, 'unknown key "extra"']
+  }.each do |what, ((from, to), line, message)|
+    it "refuses #{what} at its line" do
+      text = written(entries)
+      damaged = text.sub(from, to)
+      expect(damaged).not_to eq(text)
+      expect(error_of(damaged)).to include("plan.yml:#{line}:", message)
+    end
+  end
+
+  it "refuses binary bytes, an empty file and broken YAML" do
+    expect(error_of("\x00\xff".b)).to include("plan.yml:1:", "invalid UTF-8")
+    expect(error_of("")).to include("the file is empty or not a mapping")
+    expect(error_of("builds: [\n")).to include("plan.yml:", "invalid YAML")
+  end
+end

@@ -1,0 +1,75 @@
+# frozen_string_literal: true
+
+# The unit layer: one spec file per core file of lib/, fed in memory. It
+# loads only the file under test (no spec_helper: no fixtures, servers or
+# CLI runner) and refuses child processes, so that
+# `bundle exec rspec spec/unit` stays well under a minute. A real HTTP
+# server on 127.0.0.1 is a thread, not a child, and is allowed.
+
+$LOAD_PATH.unshift(File.expand_path("../../lib", __dir__))
+require "rspec"
+
+module UnitLayer
+  # Raised when code under a unit test starts a child process.
+  class ChildProcess < StandardError; end
+
+  # Guards the ways Ruby starts children (Open3 and IO.popen go through
+  # Process.spawn) while a unit example runs; other examples of the same
+  # rspec run are untouched.
+  module NoChildren
+    NAMES = %i[spawn system exec fork `].freeze
+
+    NAMES.each do |name|
+      define_method(name) do |*args, **options, &block|
+        raise ChildProcess, "a unit test started a child process (#{name} #{args.first.inspect})" if Thread.current[:relspec_unit]
+
+        super(*args, **options, &block)
+      end
+    end
+  end
+
+  # Kernel's methods are private in objects: so are the guards there.
+  module PrivateNoChildren
+    include NoChildren
+
+    private(*NoChildren::NAMES)
+  end
+
+  def self.guard
+    Kernel.singleton_class.prepend(NoChildren)
+    Process.singleton_class.prepend(NoChildren)
+    Object.prepend(PrivateNoChildren)
+  end
+end
+
+UnitLayer.guard
+
+RSpec.configure do |config|
+  config.expect_with(:rspec) { |c| c.syntax = :expect }
+  config.disable_monkey_patching!
+  config.order = :random
+
+  config.around(:each, file_path: %r{spec/unit/}) do |example|
+    Thread.current[:relspec_unit] = true
+    example.run
+  ensure
+    Thread.current[:relspec_unit] = nil
+  end
+end
+
+# Release-spec files from text, as SpecFile reads them from disk.
+require "relspec/release_spec/spec_file"
+
+module SpecFiles
+  def spec_file(text, name: "child")
+    path = "specs/#{name}.yml"
+    Relspec::ReleaseSpec::SpecFile.new(path, Relspec::Yaml::LocatedDocument.parse(text, file: path))
+  end
+
+  # "rule@line: message" of each diagnostic, in reading order.
+  def findings(diagnostics)
+    diagnostics.sort_by(&:sort_key).map { |d| "#{d.severity} #{d.rule}@#{d.location&.line}: #{d.message}" }
+  end
+end
+
+RSpec.configure { |config| config.include SpecFiles, file_path: %r{spec/unit/release_spec/} }
