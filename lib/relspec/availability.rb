@@ -42,12 +42,11 @@ module Relspec
     def self.check(planned, mode: "auto", launchpad: nil, only: nil, timeout: 10,
                    concurrency: LaunchpadSource::CONCURRENCY, launchpad_base: nil)
       launchpad_base = launchpad&.base || launchpad_base || LaunchpadClient::DEFAULT_BASE
-      resolution = planned.resolution
-      sources = Sources.new(resolution.effective.distributions, mode: mode, spec_dir: File.dirname(resolution.spec_file.path),
+      sources = Sources.new(planned.effective.distributions, mode: mode, spec_dir: planned.spec_dir,
                                                                 launchpad: launchpad, fetcher_options: { timeout: timeout },
                                                                 apt_cache: Apt::Cache.new(Apt::Cache.default_dir),
                                                                 concurrency: concurrency, launchpad_base: launchpad_base)
-      Check.run(resolution.effective.release, Requirements.of(planned, only: only), sources)
+      Check.run(planned.effective.release, Requirements.of(planned, only: only), sources)
     end
 
     # The same check from what is at hand: apt archives as configured (their

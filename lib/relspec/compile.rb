@@ -51,14 +51,14 @@ module Relspec
     def run
       @planned = Plan.compute(@path, timeout: @timeout, discard_lock: @discard_lock)
       @on_planned&.call(@planned)
-      @effective = @planned.resolution.effective
+      @effective = @planned.effective
       @tree = OutputTree.new(@out, @effective.release)
       require_maintainer
       require_workspace
       availability = if @check
                        Availability.guard(@planned, timeout: @timeout, **(@check.is_a?(Hash) ? @check : {}))
                      end
-      @catalog = @planned.release_catalog.catalog
+      @catalog = @planned.catalog
       plan = @planned.plan
       jobs, published = jobs_of(plan)
       sweep_temporaries
@@ -76,17 +76,17 @@ module Relspec
       return if @effective.maintainer
 
       raise InvalidInput, [Diagnostic.error("missing-maintainer", "release #{@effective.release} names no maintainer",
-                                            location: @planned.resolution.spec_file.location(["release"]),
+                                            location: @planned.spec_location(["release"]),
                                             hint: "add `maintainer: Name <address>` (or inherit it from a parent)")]
     end
 
     def require_workspace
-      workspace = @planned.release_catalog.workspace
+      workspace = @planned.workspace
       return unless Catalog::SnapshotSource.snapshot?(workspace)
 
       raise InvalidInput, [Diagnostic.error("snapshot-workspace",
                                             "compile needs the package checkouts, but #{workspace} is a catalog snapshot",
-                                            location: @planned.resolution.spec_file.location(["workspace"]),
+                                            location: @planned.spec_location(["workspace"]),
                                             hint: "point `workspace:` at the autoproj workspace to compile")]
     end
 
@@ -101,7 +101,7 @@ module Relspec
           next unless decision.build?
 
           dir = @tree.source_dir(target, decision.deb_name)
-          jobs << [dir, source_package(@planned.work.fetch(target).fetch(decision.package), decision)]
+          jobs << [dir, source_package(@planned.work_for(target, decision.package), decision)]
         end
       end
       [jobs.sort_by(&:first), published]
@@ -109,17 +109,17 @@ module Relspec
 
     def source_package(work, decision)
       input = work.input
-      package = input.fetch(:package)
+      package = input.package
       Debian::SourcePackage.new(
         input: input, version: decision.version, digest: work.digest, checkout: checkout_of(package),
         overlay: work.overlay, orig_cache: @tree.orig_cache,
-        substitutions: { "@RELSPEC_INSTALL_DIR@" => input[:install_dir], "@RELSPEC_RELEASE@" => @effective.release,
-                         "@RELSPEC_PACKAGE@" => input[:deb_name] }
+        substitutions: { "@RELSPEC_INSTALL_DIR@" => input.install_dir, "@RELSPEC_RELEASE@" => @effective.release,
+                         "@RELSPEC_PACKAGE@" => input.deb_name }
       )
     end
 
     def checkout_of(package)
-      package.source_dir && File.join(@planned.release_catalog.workspace, package.source_dir)
+      package.source_dir && File.join(@planned.workspace, package.source_dir)
     end
 
     # Leftovers of compiles that were killed: removed before this one

@@ -13,32 +13,29 @@ require_relative "plan/lock_parser"
 require_relative "plan/lock_generator"
 require_relative "plan/settlement"
 require_relative "plan/gem_check"
+require_relative "debian/overlay"
+require_relative "plan/facts"
+require_relative "plan/result"
 
 module Relspec
   # The release plan (docs/plan.md): for every target and package, inherit,
   # build or published, with causes; recorded in releases/<r>/lock.yml.
   module Plan
-    # Everything one planning run produced. +lock+: the lock of this plan
-    # (to be written by plan --write and compile); +previous+: the lock read
-    # (nil when there was none or it was discarded); +work+: Target =>
-    # {package => Settlement::Work} for the builds, what compile emits.
-    Result = Struct.new(:resolution, :plan, :lock, :previous, :lock_path, :spec_digest, :own, :release_catalog,
-                        :ancestors, :work, :project_root, keyword_init: true) do
-      def lock_text
-        LockGenerator.dump(lock)
-      end
-
-      def write_lock
-        LockGenerator.write(lock_path, lock)
-      end
-    end
-
-    # Plans the release of the spec at +path+. The project root (where
-    # releases/ lives) is the folder above the spec's folder. +timeout+ is the
-    # HTTP timeout in seconds; +cache_dir+ holds downloaded indices (nil: none).
-    # +discard_lock+: start without the lock's history when it cannot be read.
+    # Plans the release of the spec at +path+: Plan.decide over Plan.read.
+    # Returns a Result.
     def self.compute(path, timeout: 10, cache_dir: Apt::Cache.default_dir, catalog_cache: Catalog::Cache.new,
                      discard_lock: false)
+      decide(read(path, timeout: timeout, cache_dir: cache_dir, catalog_cache: catalog_cache, discard_lock: discard_lock))
+    end
+
+    # Everything planning reads (Facts): the spec hierarchy, the workspace,
+    # the ancestors' and the release's repositories, the distribution's gems
+    # and the lock. The project root (where releases/ and overlays/ live) is
+    # the folder above the spec's folder. +timeout+ is the HTTP timeout in
+    # seconds; +cache_dir+ holds downloaded indices (nil: none).
+    # +discard_lock+: start without the lock's history when it cannot be read.
+    def self.read(path, timeout: 10, cache_dir: Apt::Cache.default_dir, catalog_cache: Catalog::Cache.new,
+                  discard_lock: false)
       resolution = ReleaseSpec.resolve(path)
       effective = resolution.effective
       lock_path = Lock.path(project_root(path), effective.release)
@@ -60,14 +57,24 @@ module Relspec
       GemCheck.call(previous, release_catalog, resolution)
       distribution = gem_distribution || read_distribution(resolution, wanted_of(release_catalog), targets, fetcher_options,
                                                            cache)
-      planner = Planner.new(release_catalog: release_catalog, effective: effective, spec_file: resolution.spec_file,
-                            ancestors: ancestors, inventory: inventory, distribution: distribution)
       root = project_root(path)
-      plan, work = settle(planner.plan, release_catalog, effective, ancestors, own, previous, root)
-      spec_digest = Lock.spec_digest(effective)
-      Result.new(resolution: resolution, plan: plan, lock: Lock.from_plan(plan, spec_digest, previous&.history || History.empty),
-                 previous: previous, lock_path: lock_path, spec_digest: spec_digest, own: own,
-                 release_catalog: release_catalog, ancestors: ancestors, work: work, project_root: root)
+      Facts.new(resolution: resolution, release_catalog: release_catalog, ancestors: ancestors, inventory: inventory,
+                distribution: distribution, own: own, previous: previous, lock_path: lock_path, project_root: root,
+                overlays: ->(name, arch) { Debian::Overlay.for(root, name, arch: arch) })
+    end
+
+    # The decisions over what was read (+facts+: Facts), versions settled,
+    # and the lock that records them. Reads nothing but the overlays.
+    def self.decide(facts)
+      resolution = facts.resolution
+      effective = resolution.effective
+      planner = Planner.new(release_catalog: facts.release_catalog, effective: effective, spec_file: resolution.spec_file,
+                            ancestors: facts.ancestors, inventory: facts.inventory, distribution: facts.distribution)
+      plan, work = settle(planner.plan, facts)
+      history = facts.previous&.history || History.empty
+      Result.new(resolution: resolution, release_catalog: facts.release_catalog, plan: plan,
+                 lock: Lock.from_plan(plan, Lock.spec_digest(effective), history), lock_path: facts.lock_path, work: work,
+                 lock_read: !facts.previous.nil?, project_root: facts.project_root)
     end
 
     # The use case's entry, shaped as Compile.run, Builder.run, Publish.run,
@@ -93,11 +100,12 @@ module Relspec
       nil
     end
 
-    def self.settle(plan, release_catalog, effective, ancestors, own, previous, root)
-      inputs = DebianInputs.new(effective: effective, ancestors: ancestors, release_catalog: release_catalog)
-      versioning = Versioning.new(history: previous&.history || History.empty, own: own)
-      targets, work = Settlement.new(catalog: release_catalog.catalog, inputs: inputs, versioning: versioning,
-                                     project_root: root).call(plan.targets)
+    def self.settle(plan, facts)
+      inputs = DebianInputs.new(effective: facts.resolution.effective, ancestors: facts.ancestors,
+                                release_catalog: facts.release_catalog)
+      versioning = Versioning.new(history: facts.previous&.history || History.empty, own: facts.own)
+      targets, work = Settlement.new(catalog: facts.release_catalog.catalog, inputs: inputs, versioning: versioning,
+                                     overlays: facts.overlays).call(plan.targets)
       [plan.with_targets(targets), work]
     end
 

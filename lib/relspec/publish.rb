@@ -132,7 +132,7 @@ module Relspec
     # ancestors do) is listed.
     def self.write_osdeps(path, repository, timeout)
       planned = Plan.compute(path, timeout: timeout)
-      written = Osdeps::Files.write_release(planned.plan, planned.resolution.effective, File.join(repository, "osdeps"),
+      written = Osdeps::Files.write_release(planned.plan, planned.effective, File.join(repository, "osdeps"),
                                             held_only: true)
       [written.changed_count, written.missing]
     end

@@ -25,8 +25,8 @@ module Relspec
       # (inherited ones were checked by the release that built them).
       # +only+: the targets to check (nil: all).
       def self.of(planned, only: nil)
-        catalog = planned.release_catalog.catalog
-        release_gems = planned.release_catalog.gems.keys
+        catalog = planned.catalog
+        release_gems = planned.release_gem_names
         targets = planned.plan.targets.select { |target, _| only.nil? || only.include?(target) }
         new(targets.to_h do |target, decisions|
           needs = {}

@@ -4,6 +4,7 @@ require_relative "gem_archive"
 require_relative "gem_versions"
 require_relative "../apt/version"
 require_relative "../debian/naming"
+require_relative "../debian/gem_version"
 require_relative "../diagnostic"
 require_relative "../error"
 
@@ -40,12 +41,6 @@ module Relspec
 
       NONE = Result.new(automatic: {}, requirements: {}, provided: [], notes: []).freeze
 
-      # The upstream version of a distribution's ruby-* package as a gem
-      # version (1.2.0+dfsg-1 → 1.2.0, 1.0.0~pre-1 → 1.0.0.pre), or nil.
-      def self.gem_version_of(deb_version)
-        text = Apt::Version.parse(deb_version).upstream.sub(/[+~](dfsg|ds|repack).*\z/, "").tr("~", ".")
-        Gem::Version.correct?(text) ? Gem::Version.new(text) : nil
-      end
 
       # +selected+: codename => the selected package names of +catalog+;
       # +pinned+: `gems:`; +archives+: target name => {ruby-* name =>
@@ -165,7 +160,7 @@ module Relspec
 
         deb = Debian::Naming.distribution_gem(name)
         @archives.values.all? do |found|
-          version = found&.[](deb)&.then { |text| self.class.gem_version_of(text) }
+          version = found&.[](deb)&.then { |text| Debian::GemVersion.from_debian(text) }
           version && yield(version)
         end
       end

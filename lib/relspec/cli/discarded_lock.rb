@@ -14,7 +14,7 @@ module Relspec
       end
 
       def self.discarded?(planned)
-        planned.previous.nil? && File.exist?(planned.lock_path)
+        !planned.lock_read? && File.exist?(planned.lock_path)
       end
     end
   end

@@ -34,7 +34,7 @@ module Relspec
         require_relative "../project"
         require_relative "../osdeps/files"
         result = Plan.run(path, timeout: options[:timeout])
-        effective = result.resolution.effective
+        effective = result.effective
         dir = Project.new(result.project_root).osdeps_dir(effective.release)
         written = Osdeps::Files.write_release(result.plan, effective, dir, held_only: options[:from_repository])
         written.written.each { |target, changed| $stderr.puts("#{changed ? 'wrote' : 'unchanged'} #{target}") }

@@ -5,6 +5,7 @@ require "digest"
 require_relative "naming"
 require_relative "control_relations"
 require_relative "license_name"
+require_relative "build_input"
 require_relative "environment_file"
 require_relative "../yaml/writer"
 
@@ -14,10 +15,9 @@ module Relspec
     # templates per build type (3.0 (quilt); the debhelper compat level of
     # the target distribution, whose features the templates keep to).
     #
-    # Inputs (a Hash, see BuildInput in emitter.rb): the catalog Package, its
-    # Debian name and version, the target codename, the release's settings,
-    # the Debian names and versions of its dependencies on this target, and its
-    # OS dependencies resolved for the codename.
+    # Input: a BuildInput (the catalog Package, its Debian name and version,
+    # the target, the release's settings, its dependencies as decided on the
+    # target and its OS dependencies resolved for the codename).
     class DebianDir
       TEMPLATES = File.join(__dir__, "templates")
       SECTIONS = { "ruby" => "ruby", "gem" => "ruby", "import" => "misc", "archive" => "misc",
@@ -30,7 +30,8 @@ module Relspec
       # revision (the digest must not depend on what it decides).
       VERSION_PLACEHOLDER = "@RELSPEC_VERSION@"
 
-      # +version+: the PackageVersion, or nil for the digest's rendering.
+      # +input+: BuildInput; +version+: the PackageVersion, or nil for the
+      # digest's rendering.
       def self.render(input, version:)
         new(input).render(version)
       end
@@ -88,12 +89,12 @@ module Relspec
       end
 
       def variables
-        package = @in.fetch(:package)
+        package = @in.package
         {
-          source: source, section: SECTIONS.fetch(package.build_type, "devel"), maintainer: @in.fetch(:maintainer),
+          source: source, section: SECTIONS.fetch(package.build_type, "devel"), maintainer: @in.maintainer,
           build_depends: build_depends, depends: depends, homepage: homepage, architecture: architecture,
-          synopsis: synopsis, long_description: long_description, codename: @in.fetch(:codename),
-          release: @in.fetch(:release), package_name: package.name, vcs_url: shown_url(package.vcs.url.to_s),
+          synopsis: synopsis, long_description: long_description, codename: @in.codename,
+          release: @in.release, package_name: package.name, vcs_url: shown_url(package.vcs.url.to_s),
           vcs_ref: vcs_ref(package.vcs), commit: package.vcs.commit.to_s, date: changelog_date,
           copyright_holders: copyright_holders, license: license_text, license_name: LicenseName.of(license_text),
           common_license: LicenseName.common_license_file(LicenseName.of(license_text)),
@@ -114,7 +115,7 @@ module Relspec
       GEM_DIR = "gems"
 
       def compat
-        @in.fetch(:debhelper_compat, 13)
+        @in.debhelper_compat
       end
 
       def debhelper
@@ -129,7 +130,7 @@ module Relspec
       ROCK_CMAKE_DEFINES = { "CMAKE_BUILD_TYPE" => "Release", "ROCK_TEST_ENABLED" => "OFF" }.freeze
 
       def cmake_options
-        defines = ROCK_CMAKE_DEFINES.merge(@in.fetch(:package).defines)
+        defines = ROCK_CMAKE_DEFINES.merge(@in.package.defines)
                                     .merge("CMAKE_INSTALL_PREFIX" => "$(PREFIX)", "CMAKE_INSTALL_LIBDIR" => "lib")
         defines.map do |name, value|
           option = "-D#{name}=#{value}"
@@ -139,22 +140,22 @@ module Relspec
       end
 
       def source
-        @in.fetch(:deb_name)
+        @in.deb_name
       end
 
       # Prefixes of the dependencies built by Rock releases (the
       # distribution's own packages live in the system).
       def dependency_dirs
-        @in.fetch(:dependencies).filter_map { |dep| dep[:install_dir] }
+        @in.dependencies.filter_map(&:install_dir)
       end
 
       def gem_file
-        gem = @in[:gem]
+        gem = @in.gem
         gem && "#{gem.name}-#{gem.version}.gem"
       end
 
       def install_dir
-        @in.fetch(:install_dir)
+        @in.install_dir
       end
 
       # What env.sh puts on RUBYLIB. RubyGems activates the highest version
@@ -165,36 +166,36 @@ module Relspec
       # has lib/core and lib/standard); other packages: <prefix>/lib (a Ruby
       # package's gem links it to its lib/).
       def ruby_lib_dirs
-        gem = @in[:gem]
-        return ["#{install_dir}/lib"] unless gem && @in.fetch(:package).build_type == "gem"
+        gem = @in.gem
+        return ["#{install_dir}/lib"] unless gem && @in.package.build_type == "gem"
 
         full_name = gem_file.delete_suffix(".gem")
         gem.spec.require_paths.map { |path| "#{install_dir}/#{GEM_DIR}/gems/#{full_name}/#{path}" }
       end
 
       def rules_kind
-        kind = @in.fetch(:package).build_type
+        kind = @in.package.build_type
         kind == "archive" ? "import" : kind
       end
 
       # A gem is architecture-dependent only when it compiles an extension.
       def architecture
-        return @in.fetch(:gem).native? ? "any" : "all" if @in.fetch(:package).build_type == "gem"
+        return @in.gem.native? ? "any" : "all" if @in.package.build_type == "gem"
 
-        ARCH_INDEPENDENT.include?(@in.fetch(:package).build_type) ? "all" : "any"
+        ARCH_INDEPENDENT.include?(@in.package.build_type) ? "all" : "any"
       end
 
       def own_relations
-        @in.fetch(:dependencies).map { |dep| "#{dep[:deb_name]} (>= #{dep[:version]})" }
+        @in.dependencies.map { |dep| "#{dep.deb_name} (>= #{dep.version})" }
       end
 
       # The OS part: apt names and distribution gems (already ruby-<gem>).
       def os_relations
-        ControlRelations.os_relations(@in.fetch(:apt), @in.fetch(:gems))
+        ControlRelations.os_relations(@in.apt, @in.gems)
       end
 
       def build_depends
-        ControlRelations.build_depends(@in.fetch(:package).build_type, own_relations, os_relations + autoreconf,
+        ControlRelations.build_depends(@in.package.build_type, own_relations, os_relations + autoreconf,
                                        debhelper: debhelper)
       end
 
@@ -203,7 +204,7 @@ module Relspec
       AUTORECONF_BY_DEFAULT = 10
 
       def old_autotools?
-        @in.fetch(:package).build_type == "autotools" && compat < AUTORECONF_BY_DEFAULT
+        @in.package.build_type == "autotools" && compat < AUTORECONF_BY_DEFAULT
       end
 
       def autoreconf
@@ -215,26 +216,26 @@ module Relspec
       end
 
       def meta?
-        @in.fetch(:package).build_type == "meta"
+        @in.package.build_type == "meta"
       end
 
       def depends
-        ControlRelations.depends(@in.fetch(:package).build_type, architecture, own_relations, os_relations,
-                                 ships_headers: @in[:gem]&.ships_headers? || false)
+        ControlRelations.depends(@in.package.build_type, architecture, own_relations, os_relations,
+                                 ships_headers: @in.gem&.ships_headers? || false)
       end
 
       def homepage
-        url = @in[:gem] ? @in[:gem].spec.homepage.to_s : @in.fetch(:package).vcs.url.to_s
+        url = @in.gem ? @in.gem.spec.homepage.to_s : @in.package.vcs.url.to_s
         return nil if meta?
 
         url.match?(%r{\Ahttps?://}) ? url.delete_suffix(".git") : nil
       end
 
       def synopsis
-        package = @in.fetch(:package)
+        package = @in.package
         text = [package.summary, package.description, package.name].find { |candidate| candidate && !candidate.strip.empty? }
         text = text.lines.first.to_s.strip.delete_suffix(".")
-        text = "#{@in.fetch(:package).name} of release #{@in.fetch(:release)}" if text.empty?
+        text = "#{@in.package.name} of release #{@in.release}" if text.empty?
         text.length > 78 ? "#{text[0, 75]}..." : text
       end
 
@@ -245,23 +246,23 @@ module Relspec
       # with two spaces would be shown verbatim), runs of empty lines become
       # one, and a first paragraph that only repeats the synopsis is left out.
       def long_description
-        text = @in.fetch(:package).description || synopsis
+        text = @in.package.description || synopsis
         lines = text.strip.lines.map(&:strip).chunk_while { |a, b| a.empty? && b.empty? }.map(&:first)
         lines = lines.drop(1).drop_while(&:empty?) if lines.first&.delete_suffix(".") == synopsis && lines.size > 1
-        lines += ["", "Built from #{@in.fetch(:package).name} for release #{@in.fetch(:release)}."]
+        lines += ["", "Built from #{@in.package.name} for release #{@in.release}."]
         lines.map { |line| line.empty? ? " ." : " #{line}" }.join("\n")
       end
 
       # The upstream holders (manifest.xml's <copyright>, authors or
       # maintainers; a gem's authors), never the release's maintainer.
       def copyright_holders
-        package = @in.fetch(:package)
+        package = @in.package
         holders = package.copyright.empty? ? package.maintainer.to_s.split(", ") : package.copyright
         holders.empty? ? ["the authors of #{package.name}"] : holders
       end
 
       def license_text
-        text = @in.fetch(:package).license.to_s.strip.gsub(/\s+/, " ")
+        text = @in.package.license.to_s.strip.gsub(/\s+/, " ")
         text.empty? ? "unknown" : text
       end
 
@@ -306,7 +307,7 @@ module Relspec
 
       # RFC 2822 date of the commit (never the time of the run).
       def changelog_date
-        time = @in.fetch(:package).commit_time
+        time = @in.package.commit_time
         Time.utc(*time.scan(/\d+/).map(&:to_i)).strftime("%a, %d %b %Y %H:%M:%S +0000")
       end
 
@@ -323,7 +324,7 @@ module Relspec
       # relspec's own record of the package (relspec.yml in the prefix): what
       # built it and the prefixes of its dependencies.
       def metadata
-        { "package" => @in.fetch(:package).name, "release" => @in.fetch(:release), "prefix" => install_dir,
+        { "package" => @in.package.name, "release" => @in.release, "prefix" => install_dir,
           "dependencies" => dependency_dirs }
       end
     end

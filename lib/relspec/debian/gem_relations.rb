@@ -2,6 +2,7 @@
 
 require "rubygems/requirement"
 require_relative "package_version"
+require_relative "gem_version"
 
 module Relspec
   module Debian
@@ -34,11 +35,11 @@ module Relspec
       def bounds(deb, operator, version)
         return [] if operator == ">=" && version.segments.all?(&:zero?) # RubyGems' "any version"
         if operator == "~>"
-          return ["#{deb} (>= #{PackageVersion.of_gem(version)})", "#{deb} (<< #{PackageVersion.of_gem(version.bump)})"]
+          return ["#{deb} (>= #{GemVersion.to_debian(version)})", "#{deb} (<< #{GemVersion.to_debian(version.bump)})"]
         end
 
         debian = OPERATORS[operator]
-        debian ? ["#{deb} (#{debian} #{PackageVersion.of_gem(version)})"] : []
+        debian ? ["#{deb} (#{debian} #{GemVersion.to_debian(version)})"] : []
       end
     end
   end

@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require_relative "../apt/version"
+require_relative "gem_version"
 
 module Relspec
   module Debian
@@ -83,17 +84,10 @@ module Relspec
           "#{base(manifest_version)}.#{date.delete('-')}.#{time.delete(':')}"
         end
 
-        # A gem's version as a Debian upstream version: a prerelease
-        # ("1.0.0.pre") must sort before the release, so it gets a tilde
-        # ("1.0.0~pre").
-        def of_gem(version)
-          version.to_s.sub(/\.(?=[A-Za-z])/, "~")
-        end
-
         # The upstream version of a catalog package: the gem version for gems,
         # else made of the manifest version and the commit time.
         def of_package(package)
-          package.build_type == "gem" ? of_gem(package.version) : upstream(package.version, package.commit_time)
+          package.build_type == "gem" ? GemVersion.to_debian(package.version) : upstream(package.version, package.commit_time)
         end
 
         # The upstream part of a version relspec made (nil for anything else).

@@ -32,7 +32,7 @@ module Relspec
       TOOL_ENV = { "LC_ALL" => "C.UTF-8", "TZ" => "UTC" }.freeze
       TOOL_UMASK = 0o022
 
-      # +input+: DebianDir input; +version+: the settled PackageVersion;
+      # +input+: BuildInput; +version+: the settled PackageVersion;
       # +digest+: the digest of debian/ it was settled from; +checkout+: the
       # package's source folder; +overlay+: its Overlay; +orig_cache+: folder
       # where orig tarballs are made once per upstream version and shared by
@@ -53,7 +53,7 @@ module Relspec
       attr_reader :repaired
 
       def source
-        @input.fetch(:deb_name)
+        @input.deb_name
       end
 
       def upstream
@@ -66,7 +66,7 @@ module Relspec
 
       # What the emitted files are made of; equal stamps mean equal files.
       def stamp
-        Digest::SHA256.hexdigest([@input.fetch(:package).vcs.commit, upstream, @version.to_s, @digest].join("\0"))
+        Digest::SHA256.hexdigest([@input.package.vcs.commit, upstream, @version.to_s, @digest].join("\0"))
       end
 
       # Writes into +dir+ unless it already holds these files. True if written.
@@ -109,7 +109,7 @@ module Relspec
       # every target.
       def orig_tarball
         name = Naming.orig_tarball(source, upstream)
-        gem = @input[:gem]
+        gem = @input.gem
         # a gem's tarball is its own bytes: a different .gem is another cache entry
         key = gem ? gem.sha256[0, 16] : "upstream"
         path = File.join(@orig_cache, key, name)
@@ -127,13 +127,13 @@ module Relspec
       end
 
       def write_orig(path)
-        package = @input.fetch(:package)
+        package = @input.package
         prefix = "#{source}-#{upstream}"
         if package.build_type == "meta"
           with_meta_tree { |tree| OrigTarball.write(path, checkout: tree, commit: nil, prefix: prefix, mtime: commit_time) }
-        elsif @input[:gem]
+        elsif @input.gem
           Dir.mktmpdir("relspec-gem") do |tree|
-            @input[:gem].unpack(tree)
+            @input.gem.unpack(tree)
             OrigTarball.write(path, checkout: tree, commit: nil, prefix: prefix, mtime: commit_time, everything: true)
           end
         else
@@ -144,14 +144,14 @@ module Relspec
       # A metapackage has no source: its tarball holds a README naming the members.
       def with_meta_tree
         Dir.mktmpdir("relspec-meta") do |dir|
-          package = @input.fetch(:package)
+          package = @input.package
           File.write(File.join(dir, "README"), "#{package.description}\n")
           yield dir
         end
       end
 
       def commit_time
-        Time.utc(*@input.fetch(:package).commit_time.scan(/\d+/).map(&:to_i))
+        Time.utc(*@input.package.commit_time.scan(/\d+/).map(&:to_i))
       end
 
       def write_debian(tree)
@@ -177,9 +177,9 @@ module Relspec
           file = File.join(tree, path)
           File.file?(file) && !File.symlink?(file) ? File.binread(file) : nil
         end
-        generated = OverlayPatch.of(files, upstream: upstream, package_name: @input.fetch(:package).name,
+        generated = OverlayPatch.of(files, upstream: upstream, package_name: @input.package.name,
                                            overlay_dir: @overlay.dir)
-        (generated ? [[OverlayPatch::NAME, generated]] : []) + @overlay.patches(@input.fetch(:package).name)
+        (generated ? [[OverlayPatch::NAME, generated]] : []) + @overlay.patches(@input.package.name)
       end
 
       # mkdir -p with mode 0755 whatever the umask (the folders of debian/
@@ -208,10 +208,10 @@ module Relspec
       def fail_with(command, output)
         detail = output.lines.grep(/error|fail|FAILED|can't|cannot/i).first(5).join.strip
         detail = output.lines.last(5).join.strip if detail.empty?
-        raise InvalidInput, [Diagnostic.error("source-package", "#{command.first} failed for #{@input.fetch(:package).name} " \
+        raise InvalidInput, [Diagnostic.error("source-package", "#{command.first} failed for #{@input.package.name} " \
                                                                 "(#{source}): #{detail}",
                                               location: Location.file_only(source),
-                                              hint: "check the package's overlays (overlays/#{@input.fetch(:package).name}/)")]
+                                              hint: "check the package's overlays (overlays/#{@input.package.name}/)")]
       end
     end
   end

@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require_relative "../debian/control_relations"
+require_relative "../debian/build_input"
 require_relative "../release_spec/values/prefixes"
 
 module Relspec
@@ -25,14 +26,14 @@ module Relspec
       def for(target, decision, upstream, decisions)
         package = @release_catalog.catalog.package(decision.package)
         os = package.os_dependencies_for(target.codename)
-        {
+        Debian::BuildInput.new(
           package: package, deb_name: decision.deb_name, upstream: upstream, codename: target.codename,
           release: @effective.release, maintainer: @effective.maintainer, install_dir: install_dir_of(decision),
           debhelper_compat: @effective.distributions.fetch(target.codename).debhelper_compat,
           dependencies: dependencies_of(package, decisions), apt: os.apt,
           gems: Debian::ControlRelations.distribution_gems(os, @release_catalog.gems.keys),
           gem: @release_catalog.gems[package.name]
-        }
+        )
       end
 
       # The folder a decided package installs into; nil for the
@@ -65,7 +66,8 @@ module Relspec
       def dependencies_of(package, decisions)
         dependency_names(package, decisions).map do |name|
           decision = decisions[name]
-          { deb_name: decision.deb_name, version: decision.version.to_s, install_dir: install_dir_of(decision) }
+          Debian::BuildInput::Dependency.new(deb_name: decision.deb_name, version: decision.version.to_s,
+                                             install_dir: install_dir_of(decision))
         end
       end
 

@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require_relative "../debian/package_version"
+require_relative "../debian/gem_version"
 require_relative "../diagnostic"
 require_relative "../error"
 
@@ -19,7 +20,7 @@ module Relspec
         recorded = locked&.packages || {}
         problems = release_catalog.gems.filter_map do |name, archive|
           before = recorded[name]
-          next unless before && before["version"] == Debian::PackageVersion.of_gem(archive.version) &&
+          next unless before && before["version"] == Debian::GemVersion.to_debian(archive.version) &&
                       before["commit"] && before["commit"] != archive.sha256
 
           Diagnostic.error("gem-changed", "gem #{name} #{archive.version} from #{archive.origin} is not the .gem the lock " \

@@ -8,6 +8,7 @@ require_relative "../catalog/gem_resolution"
 require_relative "../apt/version"
 require_relative "../debian/naming"
 require_relative "../debian/package_version"
+require_relative "../debian/gem_version"
 require_relative "../release_spec/package_pattern"
 require_relative "../diagnostic"
 require_relative "../error"
@@ -95,9 +96,9 @@ module Relspec
 
       def distribution_fits?(package, version)
         requirements = @gem_requirements[package.name]
-        return Apt::Version.parse(version).upstream.sub(/[+~](dfsg|ds|repack).*\z/, "") == upstream(package) unless requirements
+        return Debian::GemVersion.debian_upstream(version) == upstream(package) unless requirements
 
-        found = Catalog::GemResolution.gem_version_of(version)
+        found = Debian::GemVersion.from_debian(version)
         !found.nil? && requirements.all? { |requirement| requirement.satisfied_by?(found) }
       end
 

@@ -5,7 +5,6 @@ require_relative "build_order"
 require_relative "debian_inputs"
 require_relative "versioning"
 require_relative "../debian/debian_dir"
-require_relative "../debian/overlay"
 require_relative "../debian/package_version"
 
 module Relspec
@@ -20,13 +19,14 @@ module Relspec
       # +overlay+ and the +digest+ of debian/ the version was settled from.
       Work = Struct.new(:input, :overlay, :digest, keyword_init: true)
 
-      # +inputs+: DebianInputs; +versioning+: Versioning; +project_root+:
-      # where overlays/ lives.
-      def initialize(catalog:, inputs:, versioning:, project_root:)
+      # +inputs+: DebianInputs; +versioning+: Versioning; +overlays+: the
+      # Debian::Overlay of a package on an architecture (+overlays.call(name,
+      # arch)+), read from overlays/ by Plan.read.
+      def initialize(catalog:, inputs:, versioning:, overlays:)
         @catalog = catalog
         @inputs = inputs
         @versioning = versioning
-        @project_root = project_root
+        @overlays = overlays
       end
 
       # [targets with settled decisions, Target => {package => Work}]
@@ -52,7 +52,7 @@ module Relspec
         package = @catalog.package(decision.package)
         upstream = Debian::PackageVersion.of_package(package)
         input = @inputs.for(target, decision, upstream, decisions)
-        overlay = Debian::Overlay.for(@project_root, package.name, arch: target.arch)
+        overlay = @overlays.call(package.name, target.arch)
         digest = Digest::SHA256.hexdigest(Debian::DebianDir.digest(Debian::DebianDir.render(input, version: nil)) +
                                           overlay.signature)
         result = @versioning.settle(target: target, package: package.name, deb_name: decision.deb_name,

@@ -25,9 +25,13 @@ RSpec.describe "debian/rules build environment" do
       vcs: Relspec::Catalog::Vcs.from_h("type" => "git", "url" => "https://example.org/x.git", "commit" => "a" * 40),
       dependencies: dependencies
     )
-    input = { package: catalog_package, deb_name: deb(name), upstream: "0.1", codename: "bookworm", release: "r",
-              maintainer: "M <m@example.org>", install_dir: prefix(name), apt: [], gems: [], gem: nil,
-              dependencies: dependencies.map { |dep| { deb_name: deb(dep), version: "0.1-1", install_dir: prefix(dep) } } }
+    dependency_inputs = dependencies.map do |dep|
+      Relspec::Debian::BuildInput::Dependency.new(deb_name: deb(dep), version: "0.1-1", install_dir: prefix(dep))
+    end
+    input = Relspec::Debian::BuildInput.new(
+      package: catalog_package, deb_name: deb(name), upstream: "0.1", codename: "bookworm", release: "r",
+      maintainer: "M <m@example.org>", install_dir: prefix(name), apt: [], gems: [], dependencies: dependency_inputs
+    )
     files = Relspec::Debian::DebianDir.render(input, version: "0.1-1~bookworm").transform_values(&:first)
     FileUtils.mkdir_p(prefix(name))
     File.write(File.join(prefix(name), "env.sh"), files.fetch("env.sh"))

@@ -21,9 +21,11 @@ RSpec.describe "debian/copyright of a Rock package" do
   end
 
   def render(package)
-    input = { package: package, deb_name: "rock-r-base-cmake", upstream: "0.20210304.050607", codename: "bookworm",
-              release: "r", maintainer: "Release Maintainer <release@example.org>",
-              install_dir: "/opt/rock/r/rock-r-base-cmake", dependencies: [], apt: [], gems: [], gem: nil }
+    input = Relspec::Debian::BuildInput.new(
+      package: package, deb_name: "rock-r-base-cmake", upstream: "0.20210304.050607", codename: "bookworm",
+      release: "r", maintainer: "Release Maintainer <release@example.org>",
+      install_dir: "/opt/rock/r/rock-r-base-cmake", dependencies: [], apt: [], gems: [], gem: nil
+    )
     Relspec::Debian::DebianDir.render(input, version: "0.20210304.050607-1~bookworm").transform_values(&:first)
   end
 

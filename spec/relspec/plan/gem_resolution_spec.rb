@@ -63,7 +63,7 @@ RSpec.describe "gem osdeps resolved against the distribution and gem_source" do
     expect(plan["foo"]).to include("decision" => "build", "deb" => "rock-auto-ruby-foo", "version" => "2.0.0-1~bookworm")
     expect(plan["bar"]).to include("decision" => "build", "version" => "1.1.0-1~bookworm")
     expect(plan.keys).not_to include("baz")
-    catalog = result.release_catalog.catalog
+    catalog = result.catalog
     expect(catalog.package("foo").dependencies).to eq(["bar"])
     # foo's requirement on baz reaches its debian/control as a relation on ruby-baz
     baz = catalog.package("foo").os_dependencies_for("bookworm")

@@ -14,9 +14,11 @@ RSpec.describe "debian/ per debhelper compat level" do
       name: "pkg", package_set: "set", build_type: build_type, commit_time: "2021-03-04T05:06:07Z", source_dir: "src/pkg",
       vcs: Relspec::Catalog::Vcs.from_h("type" => "git", "url" => "https://example.org/pkg.git", "commit" => "a" * 40)
     )
-    input = { package: package, deb_name: "rock-r-pkg", upstream: "0.1", codename: "x", release: "r",
-              maintainer: "M <m@example.org>", install_dir: install_dir, dependencies: [], apt: [],
-              gems: [], gem: nil, debhelper_compat: compat }
+    input = Relspec::Debian::BuildInput.new(
+      package: package, deb_name: "rock-r-pkg", upstream: "0.1", codename: "x", release: "r",
+      maintainer: "M <m@example.org>", install_dir: install_dir, dependencies: [], apt: [],
+      gems: [], gem: nil, debhelper_compat: compat
+    )
     Relspec::Debian::DebianDir.render(input, version: "0.1-1~x").transform_values(&:first)
   end
 

@@ -18,9 +18,9 @@ RSpec.describe Relspec::Debian::PackageVersion do
   end
 
   it "maps a gem's prerelease before its release, as RubyGems orders them" do
-    expect(described_class.of_gem(Gem::Version.new("1.0.0.pre"))).to eq("1.0.0~pre")
-    expect(described_class.of_gem("4.0.2")).to eq("4.0.2")
-    pre = described_class.new(described_class.of_gem("1.0.0.pre"), 1, "bionic")
+    expect(Relspec::Debian::GemVersion.to_debian(Gem::Version.new("1.0.0.pre"))).to eq("1.0.0~pre")
+    expect(Relspec::Debian::GemVersion.to_debian("4.0.2")).to eq("4.0.2")
+    pre = described_class.new(Relspec::Debian::GemVersion.to_debian("1.0.0.pre"), 1, "bionic")
     expect(pre).to be < described_class.new("1.0.0", 1, "bionic")
   end
 

@@ -1,6 +1,6 @@
 # frozen_string_literal: true
 
-require "spec_helper"
+require_relative "../unit_helper"
 require "relspec/plan/lock_parser"
 require "relspec/plan/lock_generator"
 require "relspec/plan/target"

@@ -1,0 +1,37 @@
+# frozen_string_literal: true
+
+module Relspec
+  module Debian
+    # What the debian/ of one build is made from (DebianDir's input), as the
+    # plan decided it on one target: the catalog +package+, its +deb_name+
+    # and +upstream+ version, the target's +codename+ and +debhelper_compat+
+    # level, the release's name and +maintainer+, the prefix it installs into
+    # (+install_dir+), its +dependencies+ (Dependency, in the package's
+    # order), its OS dependencies resolved for the codename (+apt+ names,
+    # distribution +gems+ as ruby-<gem>) and, for a gem of the release, the
+    # +gem+ archive (nil otherwise). Immutable.
+    BuildInput = Struct.new(:package, :deb_name, :upstream, :codename, :release, :maintainer, :install_dir,
+                            :debhelper_compat, :dependencies, :apt, :gems, :gem, keyword_init: true) do
+      def initialize(debhelper_compat: BuildInput::DEFAULT_COMPAT, gem: nil, **fields)
+        super
+        freeze
+      end
+    end
+
+    class BuildInput
+      # debhelper's compat level when the target's is not known (the
+      # distributions' table, compile.md, always knows it).
+      DEFAULT_COMPAT = 13
+
+      # A dependency as debian/ names it: Debian name, the version the plan
+      # decided (text), and the prefix it installs into (nil: a package of
+      # the distribution, in the system).
+      Dependency = Struct.new(:deb_name, :version, :install_dir, keyword_init: true) do
+        def initialize(**fields)
+          super
+          freeze
+        end
+      end
+    end
+  end
+end

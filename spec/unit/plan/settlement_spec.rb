@@ -1,0 +1,114 @@
+# frozen_string_literal: true
+
+require_relative "../unit_helper"
+require "relspec/plan"
+
+# Settlement fed in memory: a catalog, decisions as the Planner gives them,
+# the lock's history and the repository's index as values, overlays as a
+# function; no workspace, repository or child process (docs/plan.md,
+# "Versions").
+RSpec.describe Relspec::Plan::Settlement do
+  let(:target) { Relspec::Plan::Target.new("bookworm", "amd64").freeze }
+  let(:upstream) { "1.0.20200601.000000" }
+  let(:graph) { { "base/cmake" => [], "base/logging" => ["base/cmake"], "base/types" => ["base/logging"] } }
+  let(:catalog) do
+    packages = graph.to_h do |name, dependencies|
+      [name, Relspec::Catalog::Package.new(
+        name: name, package_set: "set", build_type: "cmake", commit_time: "2020-06-01T00:00:00Z", source_dir: "src/#{name}",
+        version: "1.0", dependencies: dependencies,
+        vcs: Relspec::Catalog::Vcs.new(type: "git", url: "https://example.org/#{name}.git", commit: "c" * 40)
+      )]
+    end
+    Relspec::Catalog.new(packages: packages, layout: graph.keys, codenames: ["bookworm"])
+  end
+  let(:effective) do
+    Relspec::ReleaseSpec::EffectiveSpec.new({ "release" => "r", "targets" => { "bookworm" => ["amd64"] },
+                                              "install_prefix" => "/opt/rock", "maintainer" => "M <m@example.org>" }, {})
+  end
+  # an overlay that adds nothing (a package without overlays/<name>/)
+  let(:no_overlay) { Struct.new(:signature).new("") }
+
+  def deb(name, release = "r") = "rock-#{release}-#{name.tr('/', '-')}"
+
+  # base/cmake inherited from ancestor p, the others to build.
+  def decisions
+    graph.keys.to_h do |name|
+      [name, if name == "base/cmake"
+               Relspec::Plan::Decision.new(package: name, kind: :inherit, deb_name: deb(name, "p"),
+                                           version: "#{upstream}-4~bookworm", ancestor: "p").freeze
+             else
+               Relspec::Plan::Decision.new(package: name, kind: :build, deb_name: deb(name),
+                                           cause: Relspec::Plan::Cause.missing).freeze
+             end]
+    end
+  end
+
+  def settle(history: Relspec::Plan::History.empty, held: {}, overlays: ->(_name, _arch) { no_overlay })
+    release_catalog = Relspec::Catalog::ReleaseCatalog.new(catalog, { "bookworm" => graph.keys }, { "bookworm" => {} },
+                                                           "/workspace", {})
+    ancestor = Relspec::Plan::Ancestor.new(name: "p", package_prefix: "rock", install_prefix: "/opt/rock",
+                                           separate_prefixes: true).freeze
+    inputs = Relspec::Plan::DebianInputs.new(effective: effective, ancestors: [ancestor], release_catalog: release_catalog)
+    index = held.transform_values { |version| Struct.new(:version).new(version) }
+    own = Relspec::Plan::OwnRepository.new(held.empty? ? {} : { target => index })
+    versioning = Relspec::Plan::Versioning.new(history: history, own: own)
+    described_class.new(catalog: catalog, inputs: inputs, versioning: versioning, overlays: overlays)
+                   .call(target => decisions)
+  end
+
+  it "versions the builds dependencies first and names the dependencies' settled versions in debian/" do
+    targets, work = settle
+    settled = targets.fetch(target)
+    expect(settled.fetch("base/cmake").kind).to eq(:inherit)
+    expect(settled.fetch("base/logging").version.to_s).to eq("#{upstream}-1~bookworm")
+    expect(settled.fetch("base/types").depends).to eq(["base/logging"])
+    input = work.fetch(target).fetch("base/types").input
+    expect(input.dependencies.map(&:to_h))
+      .to eq([{ deb_name: deb("base/logging"), version: "#{upstream}-1~bookworm", install_dir: "/opt/rock/r/#{deb('base/logging')}" }])
+    # an inherited dependency installs into its ancestor's prefix
+    expect(work.fetch(target).fetch("base/logging").input.dependencies.map(&:install_dir))
+      .to eq(["/opt/rock/p/#{deb('base/cmake', 'p')}"])
+  end
+
+  it "records the digest of debian/ each version was settled from, and gives the same digests twice" do
+    first, = settle
+    second, = settle
+    digests = first.fetch(target).values.filter_map(&:debian_digest)
+    expect(digests.size).to eq(2)
+    expect(digests).to all(match(/\A[0-9a-f]{64}\z/))
+    expect(second.fetch(target).values.filter_map(&:debian_digest)).to eq(digests)
+  end
+
+  it "moves the revision of a dependent when a dependency's revision moves" do
+    first, = settle
+    logging = first.fetch(target).fetch("base/logging")
+    types = first.fetch(target).fetch("base/types")
+    # the history knows both at revision 1, but base/logging's repository copy is
+    # revision 1 without the history vouching for its debian/: it goes to 2
+    history = Relspec::Plan::History.empty.with_all(
+      [[target, "base/logging", logging.version, "0" * 64], [target, "base/types", types.version, types.debian_digest]]
+    )
+    again, = settle(history: history)
+    expect(again.fetch(target).fetch("base/logging").version.revision).to eq(2)
+    # base/types' debian/control now names base/logging's revision 2
+    expect(again.fetch(target).fetch("base/types").version.revision).to eq(2)
+  end
+
+  it "says published when the history vouches for the version and the repository holds it" do
+    first, = settle
+    history = Relspec::Plan::History.empty.with_all(first.fetch(target).values.select(&:build?).map do |decision|
+      [target, decision.package, decision.version, decision.debian_digest]
+    end)
+    held = first.fetch(target).values.select(&:build?).to_h { |decision| [decision.deb_name, decision.version.to_s] }
+    again, = settle(history: history, held: held)
+    expect(again.fetch(target).values.map(&:kind)).to eq(%i[inherit published published])
+  end
+
+  it "takes the overlay into the digest" do
+    plain, = settle
+    patched, = settle(overlays: ->(name, _arch) { Struct.new(:signature).new(name == "base/types" ? "patch" : "") })
+    expect(patched.fetch(target).fetch("base/types").debian_digest)
+      .not_to eq(plain.fetch(target).fetch("base/types").debian_digest)
+    expect(patched.fetch(target).fetch("base/logging").debian_digest).to eq(plain.fetch(target).fetch("base/logging").debian_digest)
+  end
+end
