@@ -43,9 +43,9 @@ module Relspec
                    concurrency: LaunchpadSource::CONCURRENCY, launchpad_base: nil)
       launchpad_base = launchpad&.base || launchpad_base || LaunchpadClient::DEFAULT_BASE
       sources = Sources.new(planned.effective.distributions, mode: mode, spec_dir: planned.spec_dir,
-                                                                launchpad: launchpad, fetcher_options: { timeout: timeout },
-                                                                apt_cache: Apt::Cache.new(Apt::Cache.default_dir),
-                                                                concurrency: concurrency, launchpad_base: launchpad_base)
+                                                             launchpad: launchpad, fetcher_options: { timeout: timeout },
+                                                             apt_cache: Apt::Cache.new(Apt::Cache.default_dir),
+                                                             concurrency: concurrency, launchpad_base: launchpad_base)
       Check.run(planned.effective.release, Requirements.of(planned, only: only), sources)
     end
 

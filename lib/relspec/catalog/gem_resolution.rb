@@ -41,7 +41,6 @@ module Relspec
 
       NONE = Result.new(automatic: {}, requirements: {}, provided: [], notes: []).freeze
 
-
       # +selected+: codename => the selected package names of +catalog+;
       # +pinned+: `gems:`; +archives+: target name => {ruby-* name =>
       # version}, nil for a target whose archive was not read (or a callable

@@ -71,6 +71,7 @@ RSpec.describe "an autoproj workspace using relspec's package set" do
       expected << "keyring: ../keys/demo-base.gpg" if release == "demo-base"
       missing = expected.reject { |line| edited.include?(line) }
       raise "specs/#{release}.yml changed shape, the test cannot point it here: #{missing}" unless missing.empty?
+
       File.write(File.join(@dir, "specs", "#{release}.yml"), edited)
     end
   end
