@@ -2,6 +2,7 @@
 
 require "fileutils"
 require "open3"
+require_relative "fixture_workspace"
 require "autoproj"
 
 # An autoproj workspace made, offline, from the REAL Rock package sets in
@@ -16,7 +17,7 @@ require "autoproj"
 # Building it takes a few seconds (20 clones): tests share one instance per
 # run (RealRockWorkspace.shared) and must not change it.
 class RealRockWorkspace
-  BUNDLES = File.expand_path("../../../shared/fixtures/rock-repos", __dir__)
+  include FixtureWorkspace
 
   PACKAGE_SETS = {
     "rock-core/package_set" => "rock-core-package_set",
@@ -60,12 +61,6 @@ class RealRockWorkspace
     end
   end
 
-  attr_reader :root
-
-  def initialize(base)
-    @root = File.join(File.expand_path(base), "workspace")
-  end
-
   def create
     write(".autoproj/config.yml", <<~YAML)
       source: src
@@ -99,17 +94,7 @@ class RealRockWorkspace
     root
   end
 
-  def source_dir(name)
-    File.join(root, "src", PACKAGES.fetch(name).last)
-  end
-
   private
-
-  def write(path, content)
-    full = File.join(root, path)
-    FileUtils.mkdir_p(File.dirname(full))
-    File.write(full, content)
-  end
 
   # Where autoproj looks for a remote package set it has checked out:
   # .autoproj/remotes/<repository id with non-word characters as _>, the id

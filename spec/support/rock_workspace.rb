@@ -2,6 +2,7 @@
 
 require "fileutils"
 require "open3"
+require_relative "fixture_workspace"
 
 # A real autoproj workspace of real Rock packages: the repositories of
 # ../shared/fixtures/rock-repos (git bundles of base/cmake, base/logging,
@@ -19,7 +20,7 @@ require "open3"
 # The bundles are third-party code: they stay in ../shared and are cloned
 # into the test's temporary folder.
 class RockWorkspace
-  BUNDLES = File.expand_path("../../../shared/fixtures/rock-repos", __dir__)
+  include FixtureWorkspace
 
   # autoproj name => [bundle, folder under src/]
   PACKAGES = {
@@ -33,12 +34,6 @@ class RockWorkspace
 
   def self.skip_reason
     "the Rock repository bundles are not in #{BUNDLES} (../shared/fixtures/rock-repos)"
-  end
-
-  attr_reader :root
-
-  def initialize(base)
-    @root = File.join(File.expand_path(base), "workspace")
   end
 
   def create
@@ -62,17 +57,7 @@ class RockWorkspace
     root
   end
 
-  def source_dir(name)
-    File.join(root, "src", PACKAGES.fetch(name).last)
-  end
-
   private
-
-  def write(path, content)
-    full = File.join(root, path)
-    FileUtils.mkdir_p(File.dirname(full))
-    File.write(full, content)
-  end
 
   def repository(name)
     File.join(root, "repositories", "#{name}.git")
