@@ -15,7 +15,8 @@ RSpec.describe "relspec show" do
       "maintainer" => "Rock Packaging <rock-dev@example.org>",
       "blacklist" => [{ "match" => "base/types", "reason" => "the project needs the 2020 types API" }],
       "pins" => { "base/types" => { "tag" => "v2.0.0" } },
-      "repository" => { "path" => "../build/repositories/demo-child", "trusted" => true }
+      "repository" => { "path" => "../build/repositories/demo-child", "trusted" => true,
+                        "url" => "http://127.0.0.1:8000/demo-child" }
     )
     expect(spec.keys.first(3)).to eq(%w[release description parent])
   end
@@ -34,7 +35,7 @@ RSpec.describe "relspec show" do
     run = relspec("show", "specs/demo-child.yml", "--origins", "--format", "json")
     document = JSON.parse(run.stdout)
     expect(document["spec"]["package_prefix"]).to eq("rock")
-    expect(document["origins"]).to include("package_prefix" => "specs/demo-base.yml:13:1",
+    expect(document["origins"]).to include("package_prefix" => "specs/demo-base.yml:15:1",
                                            "pins.base/types" => "specs/demo-child.yml:11:3")
   end
 
