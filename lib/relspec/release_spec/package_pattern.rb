@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require_relative "names"
+require_relative "../diagnostic"
 
 module Relspec
   module ReleaseSpec
@@ -8,7 +9,13 @@ module Relspec
     # inside one path segment, `**` crosses segments) or a /regex/.
     class PackagePattern
       # A problem with how a pattern is written; the caller adds the location.
-      Invalid = Struct.new(:rule, :message, :hint, keyword_init: true)
+      Invalid = Struct.new(:rule, :message, :hint, keyword_init: true) do
+        # The problem as an error at +location+; +rule+ renames it for keys
+        # other than the blacklist that take the same patterns.
+        def diagnostic(location, rule: self.rule)
+          Diagnostic.error(rule, message, location: location, hint: hint)
+        end
+      end
 
       GLOB_SEGMENT = /\A(\*\*|[A-Za-z0-9_.+\-*]+)\z/
 

@@ -32,9 +32,7 @@ module Relspec
         def self.check_entry(file, entry, match, path)
           problems = []
           parsed = PackagePattern.parse(match)
-          if parsed.is_a?(PackagePattern::Invalid)
-            problems << Diagnostic.error(parsed.rule, parsed.message, location: file.location(path), hint: parsed.hint)
-          end
+          problems << parsed.diagnostic(file.location(path)) if parsed.is_a?(PackagePattern::Invalid)
           if entry.is_a?(String)
             problems << Diagnostic.warning("blacklist-reason", "blacklist entry #{match.inspect} gives no reason",
                                            location: file.location(path),

@@ -35,7 +35,7 @@ module Relspec
           parsed = PackagePattern.parse(match)
           return [] unless parsed.is_a?(PackagePattern::Invalid)
 
-          [Diagnostic.error(parsed.rule.sub("blacklist", "leave-out"), parsed.message, location: file.location(path), hint: parsed.hint)]
+          [parsed.diagnostic(file.location(path), rule: parsed.rule.sub("blacklist", "leave-out"))]
         end
 
         def self.codename_problems(file, codenames, path)
