@@ -25,11 +25,7 @@ module Relspec
     module PackageSet
       NAME = "relspec.releases"
 
-      # relspec's files init.rb requires, paths relative to lib/ (kept in
-      # the package set below lib/ so their require_relative lines hold).
-      SHIPPED = %w[relspec/error.rb relspec/release_spec/names.rb relspec/release_spec/package_pattern.rb
-                   relspec/apt/dependency.rb relspec/osdeps/operating_system.rb relspec/osdeps/blacklist_reading.rb
-                   relspec/osdeps/selection.rb].freeze
+      INIT = File.join(__dir__, "package_set", "init.rb")
       LIB = File.expand_path("../..", __dir__)
 
       module_function
@@ -41,9 +37,9 @@ module Relspec
         raise InvalidInput, problems unless problems.empty?
 
         files = { "source.yml" => "name: #{NAME}\n", ".gitignore" => "/state/\n",
-                  "init.rb" => File.read(File.join(__dir__, "package_set", "init.rb")),
+                  "init.rb" => File.read(INIT),
                   "data/releases.yml" => ReleaseIndex.render(releases) }
-        SHIPPED.each { |path| files["lib/#{path}"] = File.read(File.join(LIB, path)) }
+        shipped.each { |path| files["lib/#{path}"] = File.read(File.join(LIB, path)) }
         apt = {}
         releases.sort_by(&:name).each do |release|
           files.merge!(release_files(release))
@@ -103,6 +99,29 @@ module Relspec
                              location: location, hint: "run `relspec publish` for it first")
           end
         end
+      end
+
+      # The relspec files init.rb needs, paths relative to lib/: the
+      # require_relative closure of init.rb, so a require added to a shipped
+      # file ships its target too (kept below lib/ so the lines still hold).
+      def shipped
+        seen = []
+        # init.rb's lines name files below the package set's lib/
+        pending = required_by(INIT).map { |target| target.delete_prefix("lib/") }
+        until pending.empty?
+          path = pending.shift
+          next if seen.include?(path)
+
+          seen << path
+          pending.concat(required_by(File.join(LIB, path)).map do |target|
+            File.expand_path(target, File.dirname(File.join(LIB, path))).delete_prefix("#{LIB}/")
+          end)
+        end
+        seen.sort
+      end
+
+      def required_by(file)
+        File.read(file).scan(/^require_relative "([^"]+)"/).map { |(target)| "#{target}.rb" }
       end
     end
   end
