@@ -65,6 +65,13 @@ module Relspec
         LeaveOut.from(values["leave_out"] || [])
       end
 
+      # The codenames each `leave_out` entry names, as written and in entry
+      # order (one whose match does not parse too, which LeaveOut skips):
+      # what HierarchyRules checks against the targets and locates.
+      def leave_out_codenames
+        (values["leave_out"] || []).map { |entry| entry["targets"] || [] }
+      end
+
       # package name => Pin, merged over the ancestors.
       def pins
         (values["pins"] || {}).transform_values { |entry| Pin.from(entry) }

@@ -26,8 +26,8 @@ module Relspec
         origin = effective.origin("leave_out")
         return [] unless origin
 
-        (effective["leave_out"] || []).each_with_index.flat_map do |entry, index|
-          (entry["targets"] || []).each_with_index.filter_map do |codename, position|
+        effective.leave_out_codenames.each_with_index.flat_map do |codenames, index|
+          codenames.each_with_index.filter_map do |codename, position|
             # a name that is no codename at all is the file rule's error
             next if effective.targets.key?(codename) || !Names::CODENAME.match?(codename.to_s)
 

@@ -81,6 +81,26 @@ RSpec.describe "ReleaseSpec typed values" do
     end
   end
 
+  describe Relspec::ReleaseSpec::LeaveOut do
+    let(:spec) do
+      effective({ "leave_out" => [{ "match" => "gui/**", "reason" => "qt4", "targets" => %w[bookworm bookworm] },
+                                  { "match" => "bad[", "reason" => "typo", "targets" => ["bookwork"] },
+                                  { "match" => "tools/x", "reason" => "everywhere" }] })
+    end
+
+    it "matches the first parseable entry that applies to the codename" do
+      expect(spec.leave_out.entries.map(&:index)).to eq([0, 2])
+      expect(spec.leave_out.match("gui/vizkit", "bookworm").reason).to eq("qt4")
+      expect(spec.leave_out.match("gui/vizkit", "bionic")).to be_nil
+      expect(spec.leave_out.match("tools/x", "bionic").codenames).to be_nil
+    end
+
+    it "gives the rules every entry's codenames as written, in place (leave_out_codenames)" do
+      expect(spec.leave_out_codenames).to eq([%w[bookworm bookworm], ["bookwork"], []])
+      expect(effective({}).leave_out_codenames).to eq([])
+    end
+  end
+
   it "reads the other keys with their defaults" do
     spec = effective({ "parent" => "base", "workspace" => "../ws", "maintainer" => "M <m@example.org>" })
     expect(spec).to have_attributes(parents: ["base"], workspace: "../ws", maintainer: "M <m@example.org>", select: nil,
