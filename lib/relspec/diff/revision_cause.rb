@@ -13,10 +13,12 @@ module Relspec
       # dependencies (+depends+) rules them out; an older one does not, so
       # the other changes of the target are then only candidates.
       INPUTS = "its Debian inputs changed (a dependency, the release's settings or the packaging"
-      # (debian/ also names where the whole dependency closure is installed,
-      # which the lock does not record per build)
-      SETTINGS = "its Debian inputs changed (the release's settings, the packaging or where an indirect dependency " \
-                 "is installed; none of its direct dependencies did)"
+      # (debian/ names only the direct dependencies, each with the folder it
+      # is installed in, which follows its release's prefixes and which the
+      # lock does not record; the rest of the closure is found through their
+      # installed env.sh at build time, so it is not an input)
+      SETTINGS = "its Debian inputs changed (the release's settings, the packaging or where a direct dependency " \
+                 "is installed; none of its direct dependencies changed)"
       # Candidates named before "and N more".
       CANDIDATES = 3
 

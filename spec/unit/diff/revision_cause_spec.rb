@@ -82,8 +82,8 @@ RSpec.describe Relspec::Diff::RevisionCause do
                       { "other" => built("6-1~bionic"), "base/types" => built("2-1~bionic"),
                         "tools/x" => built("0.9-2~bionic", blacklisted, depends: ["base/types"]) })
     expect(changes["tools/x"].rebuilt_because)
-      .to eq("its Debian inputs changed (the release's settings, the packaging or where an indirect dependency is " \
-             "installed; none of its direct dependencies did)")
+      .to eq("its Debian inputs changed (the release's settings, the packaging or where a direct dependency is " \
+             "installed; none of its direct dependencies changed)")
   end
 
   it "does not take a dependency whose cause chain alone changed for what moved the revision" do
