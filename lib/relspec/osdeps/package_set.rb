@@ -60,7 +60,7 @@ module Relspec
           archs.sort.each do |arch|
             name = "#{release.name}-#{arch}.yml"
             files["data/#{name}"] = File.read(File.join(release.repository_path, "osdeps", name))
-            files["data/packages/#{release.name}/#{codename}-#{arch}.yml"] = packages(release, codename, arch)
+            files["data/packages/#{release.name}/#{codename}/#{arch}.yml"] = packages(release, codename, arch)
           end
         end
         files

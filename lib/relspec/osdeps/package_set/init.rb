@@ -127,7 +127,7 @@ module RelspecPackageSet
 
     def indices(lineage, system)
       lineage.map do |name|
-        path = File.join(@data, "packages", name, "#{system.codename}-#{system.arch}.yml")
+        path = File.join(@data, "packages", name, system.codename, "#{system.arch}.yml")
         data = File.file?(path) ? YAML.safe_load(File.read(path)) || {} : {}
         Index.new(data.to_h { |deb, fields| [deb, Entry.new(deb, fields["depends"], fields["provides"])] })
       end
