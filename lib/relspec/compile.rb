@@ -150,7 +150,7 @@ module Relspec
 
     def write_osdeps(plan)
       dir = Project.new(@planned.project_root).osdeps_dir(@effective.release)
-      Osdeps::Files.write_release(plan, @effective, dir).changed_count
+      Osdeps::Files.write_release(plan.targets, @effective, dir).changed_count
     end
   end
 end

@@ -2,7 +2,8 @@
 
 require "fileutils"
 require_relative "release_spec"
-require_relative "plan"
+require_relative "plan/ancestor"
+require_relative "plan/inventory"
 require_relative "atomic_file"
 require_relative "diagnostic"
 require_relative "osdeps/files"
@@ -15,6 +16,8 @@ require_relative "publish/upload"
 require_relative "publish/pool_guard"
 require_relative "publish/reprepro"
 require_relative "publish/signing_key"
+require_relative "publish/locked_release"
+require_relative "publish/held_packages"
 
 module Relspec
   # `relspec publish`: the built packages of a release into its reprepro
@@ -40,8 +43,8 @@ module Relspec
       selected = Target.select(target, all, effective.release)
       # No build of these targets runs while their results are read and included.
       holding(built_folders(tree, selected)) do
-        include_and_render(path, tree, effective, repository, all, selected, timeout: timeout, waiting: waiting,
-                                                                             explicit: !target.nil?)
+        locked = LockedRelease.read(resolution, path, timeout: timeout)
+        include_and_render(locked, tree, effective, repository, all, selected, waiting: waiting, explicit: !target.nil?)
       end
     end
 
@@ -59,7 +62,8 @@ module Relspec
     end
 
     # +explicit+: the user named the target (unbuilt is then an error).
-    def self.include_and_render(path, tree, effective, repository, all, selected, timeout:, waiting:, explicit:)
+    # +locked+: the LockedRelease the osdeps files are listed from.
+    def self.include_and_render(locked, tree, effective, repository, all, selected, waiting:, explicit:)
       results = selected.to_h { |one| [one, read_results(tree, one, explicit: explicit)] }
       if results.values.none?
         raise PublishError, "nothing to publish: no target of #{effective.release} has a build-results.yml under " \
@@ -72,7 +76,7 @@ module Relspec
       config = RepositoryConfig.new(release: effective.release, targets: all, sign_with: sign_with)
       RepositoryLock.hold(repository, waiting: waiting) do
         targets = include_targets(repository, config, results, uploads)
-        written, missing = write_osdeps(path, repository, timeout)
+        written, missing = write_osdeps(locked, effective, repository)
         Result.new(release: effective.release, repository: repository, targets: targets, osdeps_written: written,
                    osdeps_missing: missing)
       end
@@ -127,14 +131,16 @@ module Relspec
       config.files.map { |name, text| AtomicFile.update(File.join(dir, name), text) }.any?
     end
 
-    # <repository>/osdeps/<release>-<arch>.yml from a new plan, which reads
-    # the repository as it is now: only what it really holds (or the
-    # ancestors do) is listed.
-    def self.write_osdeps(path, repository, timeout)
-      planned = Plan.compute(path, timeout: timeout)
-      written = Osdeps::Files.write_release(planned.plan, planned.effective, File.join(repository, "osdeps"),
-                                            held_only: true)
-      [written.changed_count, written.missing]
+    # <repository>/osdeps/<release>-<arch>.yml of the locked decisions the
+    # repository (read as it is now, after the includes) or the ancestors
+    # really hold.
+    def self.write_osdeps(locked, effective, repository)
+      entry = effective.repository
+      reader = Plan::Ancestors.reader(entry, repository, {}, Apt::Cache.new(nil))
+      own = Plan::OwnRepository.read(reader, Target.all(effective))
+      listing = HeldPackages.list(locked.lock, own: own, inventory: locked.inventory)
+      written = Osdeps::Files.write_release(listing.targets, effective, File.join(repository, "osdeps"))
+      [written.changed_count, listing.missing]
     end
     private_class_method :repository_path, :read_results, :include_targets, :write_config, :write_osdeps
   end

@@ -149,6 +149,34 @@ RSpec.describe "relspec build and publish under concurrency and faults", order: 
     File.write(plan, text)
   end
 
+  # Publish lists the repository's osdeps from the release's lock: without
+  # it, or with the lock of another spec, it refuses before touching the
+  # repository instead of listing decisions nobody made.
+  it "refuses to publish without the release's lock, or with the lock of another spec, naming the lock" do
+    lock = File.join(@dir, "releases", "conc", "lock.yml")
+    spec_file = File.join(@dir, spec)
+    pristine_lock = File.read(lock)
+    pristine_spec = File.read(spec_file)
+    hint = "hint: run relspec compile #{spec} (and build) again, then publish"
+
+    File.delete(lock)
+    run = relspec("publish", spec, "--out", "out", chdir: @dir)
+    expect([run.exit_code, run.stdout]).to eq([1, ""])
+    expect(run.stderr).to include("releases/conc/lock.yml: error[publish-lock]: conc has no lock releases/conc/lock.yml " \
+                                  "to list its repository from", hint)
+    File.write(lock, pristine_lock)
+
+    File.write(spec_file, pristine_spec.sub("Demo <demo@example.org>", "Other <other@example.org>"))
+    run = relspec("publish", spec, "--out", "out", chdir: @dir)
+    expect([run.exit_code, run.stdout]).to eq([1, ""])
+    expect(run.stderr).to include("error[publish-lock]: releases/conc/lock.yml was planned from another version of #{spec}", hint)
+    expect(run.stderr).not_to include("Traceback", ".rb:")
+    expect(File.exist?(repository)).to be(false)
+  ensure
+    File.write(lock, pristine_lock)
+    File.write(spec_file, pristine_spec)
+  end
+
   it "keeps the repository consistent when the disk fills during publish, and completes once there is space" do
     system("mount", "-t", "tmpfs", "-o", "size=1m", "relspec-full", @repos, exception: true)
     begin

@@ -36,7 +36,7 @@ module Relspec
         result = Plan.run(path, timeout: options[:timeout])
         effective = result.effective
         dir = Project.new(result.project_root).osdeps_dir(effective.release)
-        written = Osdeps::Files.write_release(result.plan, effective, dir, held_only: options[:from_repository])
+        written = Osdeps::Files.write_release(result.plan.targets, effective, dir, held_only: options[:from_repository])
         written.written.each { |target, changed| $stderr.puts("#{changed ? 'wrote' : 'unchanged'} #{target}") }
         written.missing.each { |line| $stderr.puts("missing from the repository: #{line}") }
       end

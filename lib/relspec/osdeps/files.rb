@@ -24,13 +24,14 @@ module Relspec
 
       module_function
 
-      # The osdeps files of +plan+ (a ReleasePlan) into +dir+. +effective+:
-      # the release's EffectiveSpec. +held_only+: list only what the
-      # repositories hold (inherited and published packages), as publish and
-      # `osdeps --from-repository` do.
-      def write_release(plan, effective, dir, held_only: false)
+      # The osdeps files of +decisions+ (Target => {package => Plan::Decision},
+      # a ReleasePlan's targets) into +dir+. +effective+: the release's
+      # EffectiveSpec. +held_only+: leave out the planned builds, which no
+      # repository holds yet (`osdeps --from-repository`; publish gives only
+      # what it found held, Publish::HeldPackages).
+      def write_release(decisions, effective, dir, held_only: false)
         presence = RepositoryPresence.new if held_only
-        files = Renderer.render(plan, effective.distributions, **(presence ? { present: presence.to_proc } : {}))
+        files = Renderer.render(decisions, effective.distributions, **(presence ? { present: presence.to_proc } : {}))
         FileUtils.mkdir_p(dir)
         written = files.map do |arch, text|
           path = File.join(dir, Renderer.file_name(effective.release, arch))

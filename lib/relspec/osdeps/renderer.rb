@@ -12,21 +12,23 @@ module Relspec
     module Renderer
       module_function
 
-      # +plan+: a ReleasePlan; +distributions+: codename => ReleaseSpec::Distribution;
-      # +present+: optional filter (target, decision) → bool, to leave out
-      # what a repository does not hold. Returns {arch => YAML text}.
-      def render(plan, distributions, present: ->(_target, _decision) { true })
-        by_arch = plan.targets.keys.group_by(&:arch)
+      # +decisions+: Target => {package => Plan::Decision} (a ReleasePlan's
+      # targets, or what publish read back); +distributions+: codename =>
+      # ReleaseSpec::Distribution; +present+: optional filter (target,
+      # decision) → bool, to leave out what a repository does not hold.
+      # Returns {arch => YAML text}.
+      def render(decisions, distributions, present: ->(_target, _decision) { true })
+        by_arch = decisions.keys.group_by(&:arch)
         by_arch.keys.sort.to_h do |arch|
-          [arch, Yaml::Writer.dump(entries(plan, by_arch[arch], distributions, present))]
+          [arch, Yaml::Writer.dump(entries(decisions, by_arch[arch], distributions, present))]
         end
       end
 
-      def entries(plan, targets, distributions, present)
+      def entries(decisions, targets, distributions, present)
         entries = Hash.new { |hash, key| hash[key] = {} }
         targets.sort_by(&:to_s).each do |target|
           distribution = distributions.fetch(target.codename)
-          plan.targets.fetch(target).each do |package, decision|
+          decisions.fetch(target).each do |package, decision|
             next unless present.call(target, decision)
 
             by_type = entries[package][distribution.osdeps_type_key] ||= {}

@@ -207,7 +207,7 @@ RSpec.describe "relspec publish" do
     FileUtils.rm_rf(repository)
     # what a publisher killed between reprepro's includedsc and includedeb leaves
     FileUtils.mkdir_p(File.join(repository, "conf"))
-    Relspec::Publish::RepositoryConfig.new(release: "solo", targets: [Relspec::Plan::Target.parse(target_name)]).files
+    Relspec::Publish::RepositoryConfig.new(release: "solo", targets: [Relspec::Target.parse(target_name)]).files
                                       .each { |name, text| File.write(File.join(repository, "conf", name), text) }
     dsc = Dir.glob(File.join(@target_dir, cmake, "*.dsc")).first
     output, status = Open3.capture2e("reprepro", "-b", repository, "includedsc", "bookworm", dsc)
