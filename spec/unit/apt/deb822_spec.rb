@@ -51,6 +51,8 @@ RSpec.describe Relspec::Apt::Deb822 do
       lines << "X-Empty:" if random.rand(10).zero?
       lines.shuffle(random: random).join(random.rand(8).zero? ? "\r\n" : "\n")
     end.join("\n\n \t\n")
+    # the C reader is loaded on first use (NativeReader), not by the require above
+    expect(Relspec::Apt::NativeReader.available?).to be(true)
     expect(Relspec::Apt::Native.parse(text.b)).to eq(described_class.parse_in_ruby(text.b))
     scanner = Relspec::Apt::PackagesScanner.new(text.b)
     fields = %w[Package Version Depends Description]
