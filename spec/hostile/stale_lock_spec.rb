@@ -55,6 +55,14 @@ RSpec.describe "relspec diff --base with a stale working-tree lock" do
       child = JSON.parse(run.stdout)["releases"].first
       expect(child["new"]).to eq("release" => "child", "source" => "specs/child.yml", "stale_lock" => "releases/child/lock.yml")
       expect(child["old"]).to eq("release" => "child", "source" => "HEAD:releases/child/lock.yml")
+      # publish lists the repository from the lock, so it refuses this one
+      # before reading any result or touching the repository
+      publish = relspec("publish", "specs/child.yml", "--out", "out", chdir: @dir)
+      expect([publish.exit_code, publish.stdout]).to eq([1, ""])
+      expect(publish.stderr).to include("releases/child/lock.yml: error[publish-lock]: releases/child/lock.yml is out of " \
+                                        "date: the repository of base on bionic holds other packages now",
+                                        "hint: run relspec compile specs/child.yml (and build) again, then publish")
+      expect(File.exist?(File.join(@dir, "repos", "child"))).to be(false)
     ensure
       @project.publish_base(older_logging: true)
     end
@@ -63,5 +71,9 @@ RSpec.describe "relspec diff --base with a stale working-tree lock" do
   it "reads a lock that is up to date, and says nothing about planning" do
     run = relspec("diff", "--base", "HEAD", "specs/child.yml", "--format", "json", chdir: @dir)
     expect(JSON.parse(run.stdout)["releases"].first["new"]).to eq("release" => "child", "source" => "releases/child/lock.yml")
+    # a current lock passes publish's check: what stops it is the missing build
+    publish = relspec("publish", "specs/child.yml", "--out", "out", chdir: @dir)
+    expect([publish.exit_code, publish.stderr]).to eq([1, "relspec: error: nothing to publish: no target of child has a " \
+                                                          "build-results.yml under out/child (run relspec build first)\n"])
   end
 end
