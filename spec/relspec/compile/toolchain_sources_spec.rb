@@ -3,17 +3,19 @@
 require "spec_helper"
 require_relative "../../support/real_rock_workspace"
 
-# The project's overlays/log4cpp (orocos-toolchain/log4cpp#24: a header
-# without <ctime>, which GCC 12 no longer includes through <string>) on the
-# real log4cpp of ../shared: compile carries it as a quilt patch that
-# dpkg-source applies, and the patched header compiles where upstream's does
-# not. The compiler checks the one header (a second) instead of building
-# log4cpp (minutes): that is the line the build stopped at.
-RSpec.describe "the log4cpp overlay on the real log4cpp" do
+# Source packages of the real Rock toolchain (../shared) that once failed to
+# build, each checked at the step it failed at instead of a build of minutes
+# (bin/toolchain builds them for real, docs/performance.md):
+# - log4cpp: the project's overlays/log4cpp (orocos-toolchain/log4cpp#24, a
+#   header without <ctime>, which GCC 12 no longer includes through
+#   <string>) is carried as a quilt patch and the patched header compiles;
+# - utilmm: its own upstream debian/ (compat 9, .install files) stays out
+#   of the generated packaging, so dh accepts it.
+RSpec.describe "source packages of the real Rock toolchain" do
   before(:all) do
     need_fixture(RealRockWorkspace.available?, RealRockWorkspace.skip_reason)
     @workspace = RealRockWorkspace.shared
-    @dir = Dir.mktmpdir("relspec-log4cpp")
+    @dir = Dir.mktmpdir("relspec-toolchain")
     FileUtils.mkdir_p(File.join(@dir, "overlays"))
     FileUtils.cp_r(File.join(CliRunner::ROOT, "overlays", "log4cpp"), File.join(@dir, "overlays"))
     FileUtils.mkdir_p(File.join(@dir, "specs"))
@@ -21,7 +23,7 @@ RSpec.describe "the log4cpp overlay on the real log4cpp" do
       release: rock
       maintainer: Rock Packaging <rock@example.org>
       workspace: #{@workspace.root}
-      select: [log4cpp]
+      select: [log4cpp, utilmm]
       targets: { bookworm: [amd64] }
       distributions: { bookworm: { archive: { host: true } } }
     YAML
@@ -29,9 +31,19 @@ RSpec.describe "the log4cpp overlay on the real log4cpp" do
     # the header needs (<sstream> instead of its own ostringstream)
     FileUtils.mkdir_p(File.join(@dir, "config", "log4cpp"))
     File.write(File.join(@dir, "config", "log4cpp", "config.h"), "#define LOG4CPP_HAVE_SSTREAM 1\n")
+    @compile = relspec("compile", "specs/rock.yml", "--out", "out", chdir: @dir)
   end
 
   after(:all) { FileUtils.rm_rf(@dir) if @dir }
+
+  # [dpkg-source -x output, unpacked tree] of one emitted source package
+  def unpack(source)
+    dsc = Dir[File.join(@dir, "out", "rock", "bookworm-amd64", source, "*.dsc")].first
+    tree = File.join(@dir, "tree-#{source}")
+    output, status = Open3.capture2e("dpkg-source", "-x", dsc, tree)
+    expect(status).to be_success, output
+    [output, tree]
+  end
 
   def syntax_check(tree)
     Open3.capture2e("g++", "-fsyntax-only", "-x", "c++", "-I", File.join(tree, "include"),
@@ -39,13 +51,9 @@ RSpec.describe "the log4cpp overlay on the real log4cpp" do
                     stdin_data: "#include <log4cpp/DailyRollingFileAppender.hh>\n")
   end
 
-  it "patches the emitted source package so that the header compiles with GCC 12" do
-    run = relspec("compile", "specs/rock.yml", "--out", "out", chdir: @dir)
-    expect(run.exit_code).to eq(0), run.stderr
-    dsc = Dir[File.join(@dir, "out", "rock", "bookworm-amd64", "rock-rock-log4cpp", "*.dsc")].first
-    tree = File.join(@dir, "tree")
-    output, status = Open3.capture2e("dpkg-source", "-x", dsc, tree)
-    expect(status).to be_success, output
+  it "patches log4cpp so that its header compiles with GCC 12" do
+    expect(@compile.exit_code).to eq(0), @compile.stderr
+    output, tree = unpack("rock-rock-log4cpp")
     expect(output).to include("applying ctime-for-struct-tm.patch")
     expect(File.read(File.join(tree, "debian", "patches", "series"))).to eq("ctime-for-struct-tm.patch\n")
     expect(File.read(File.join(tree, "include", "log4cpp", "DailyRollingFileAppender.hh")))
@@ -57,5 +65,16 @@ RSpec.describe "the log4cpp overlay on the real log4cpp" do
     output, status = syntax_check(@workspace.source_dir("log4cpp"))
     expect(status).not_to be_success
     expect(output).to include("field '_logsTime' has incomplete type 'tm'").or include("field ‘_logsTime’ has incomplete type ‘tm’")
+  end
+
+  it "packages utilmm with relspec's debian/ only, which dh accepts" do
+    expect(@compile.exit_code).to eq(0), @compile.stderr
+    expect(File).to exist(File.join(@workspace.source_dir("utilmm"), "debian", "compat"))
+    _, tree = unpack("rock-rock-utilmm")
+    expect(Dir.children(File.join(tree, "debian")).sort)
+      .to eq(%w[changelog control copyright env.sh env.yml relspec.yml rock-rock-utilmm.lintian-overrides rules source])
+    # the step that failed: dh read both debian/compat and debhelper-compat
+    output, status = Open3.capture2e("debian/rules", "clean", chdir: tree)
+    expect(status).to be_success, output
   end
 end
