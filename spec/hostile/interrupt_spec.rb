@@ -35,7 +35,7 @@ RSpec.describe "relspec under interrupts" do
     (1..12).map { |i| i * 0.15 }.each do |delay|
       pid = spawn_compile("interrupted")
       sleep(delay)
-      Process.kill("INT", pid)
+      signal_relspec(pid, "INT")
       run = finish_relspec(pid)
       status = run.status
       message = run.stderr
@@ -60,7 +60,7 @@ RSpec.describe "relspec under interrupts" do
     until Dir.glob(File.join(cache, "*", ".*.relspec-#{pid}-*")).any? # .orig/<key>/
       raise "no orig cache temporary appeared" if Process.clock_gettime(Process::CLOCK_MONOTONIC) > deadline
     end
-    Process.kill("KILL", pid)
+    signal_relspec(pid, "KILL")
     finish_relspec(pid)
 
     run = relspec("compile", @spec, "--out", "orig-killed", "--no-check", chdir: @dir)
@@ -89,7 +89,7 @@ RSpec.describe "relspec under interrupts" do
 
       sleep(0.01)
     end
-    Process.kill("KILL", pid)
+    signal_relspec(pid, "KILL")
     finish_relspec(pid)
     expect(Dir.glob(File.join(target, ".*.relspec-#{pid}-*"))).not_to be_empty
 

@@ -20,23 +20,29 @@ module CliRunner
   # A line of a Ruby backtrace ("lib/x.rb:12:in `m'"): what a user sees
   # only with --debug.
   BACKTRACE = /\.rb:\d+:in /
+  # A frame of relspec's own code: the executable or lib/relspec.
+  OWN_FRAME = %r{(exe/relspec|lib/relspec/\S+\.rb):\d+:in }
 
   # +max_rss_kib+ is nil for a run started in the background (a killed
-  # child writes no memory report).
-  Run = Struct.new(:args, :stdout, :stderr, :status, :max_rss_kib, keyword_init: true) do
+  # child writes no memory report); +signalled+: the test sent it a signal.
+  Run = Struct.new(:args, :stdout, :stderr, :status, :max_rss_kib, :signalled, keyword_init: true) do
     def exit_code
       status.exitstatus
     end
 
     # Why this run breaks the promise of docs/limits.md (never exit 70, no
     # backtrace without --debug), or nil. A child that a test killed with a
-    # signal did not exit: its stderr is the test's to judge.
+    # signal did not exit: its stderr is the test's to judge. A signal that
+    # came before relspec's first line is answered by Ruby's and Bundler's
+    # start-up (a Bundler backtrace without a frame of relspec's): not
+    # relspec's promise either.
     def broken_promise
       return unless status.exited?
       return "exit 70" if exit_code == 70
-      return if args.to_a.include?("--debug")
+      return if args.to_a.include?("--debug") || !stderr.match?(BACKTRACE)
+      return if signalled && !stderr.match?(OWN_FRAME)
 
-      "a Ruby backtrace without --debug" if stderr.match?(BACKTRACE)
+      "a Ruby backtrace without --debug"
     end
   end
 
@@ -72,11 +78,17 @@ module CliRunner
     pid
   end
 
+  # Sends +signal+ to a run of #spawn_relspec.
+  def signal_relspec(pid, signal)
+    signalled_relspecs << pid
+    Process.kill(signal, pid)
+  end
+
   # Waits for a run of #spawn_relspec to end; its Run.
   def finish_relspec(pid)
     args, stderr = spawned_relspecs.delete(pid)
     _, status = Process.wait2(pid)
-    run = Run.new(args: args, stderr: stderr.value, status: status)
+    run = Run.new(args: args, stderr: stderr.value, status: status, signalled: !signalled_relspecs.delete(pid).nil?)
     relspec_runs << run
     run
   end
@@ -94,5 +106,9 @@ module CliRunner
 
   def spawned_relspecs
     @spawned_relspecs ||= {}
+  end
+
+  def signalled_relspecs
+    @signalled_relspecs ||= []
   end
 end
