@@ -47,12 +47,8 @@ RSpec.describe "relspec build and publish under concurrency and faults", order: 
   # Runs relspec without the memory report (a killed child has none);
   # [status, stderr].
   def spawned(*args, env: {})
-    reader, writer = IO.pipe
-    pid = Process.spawn({ "XDG_CACHE_HOME" => CliRunner::CACHE }.merge(env), RbConfig.ruby, CliRunner::EXE, *args,
-                        chdir: @dir, out: File::NULL, err: writer, in: File::NULL)
-    writer.close
-    message = reader.read
-    [Process.wait2(pid).last, message]
+    run = finish_relspec(spawn_relspec(*args, chdir: @dir, env: env))
+    [run.status, run.stderr]
   end
 
   def reprepro(*args)
@@ -96,8 +92,7 @@ RSpec.describe "relspec build and publish under concurrency and faults", order: 
   end
 
   it "refuses a second build and a publish of a target while a build of it runs, naming the build" do
-    pid = Process.spawn({ "XDG_CACHE_HOME" => CliRunner::CACHE }, RbConfig.ruby, CliRunner::EXE, "build", spec,
-                        "--out", "out", "--backend", "host", chdir: @dir, out: File::NULL, err: File::NULL)
+    pid = spawn_relspec("build", spec, "--out", "out", "--backend", "host", chdir: @dir)
     slow_log = File.join(@release.target_dir, "logs", "#{@release.source('base/zslow')}.log")
     wait_for("the first build reaching base/zslow") { File.exist?(slow_log) }
     busy = "out/conc/bookworm-amd64: relspec build (pid #{pid}) is using it; run again when it has finished"
@@ -108,7 +103,7 @@ RSpec.describe "relspec build and publish under concurrency and faults", order: 
     expect([publish.exit_code, publish.stderr]).to eq([1, "relspec: error: cannot publish #{busy}\n"])
     expect(File.exist?(repository)).to be(false) # refused before touching the repository
 
-    expect(Process.wait2(pid).last).to be_success
+    expect(finish_relspec(pid).status).to be_success
     statuses = YAML.safe_load(File.read(File.join(@release.target_dir, "build-results.yml")))["packages"].values
     expect(statuses.map { |package| package["status"] }).to eq(%w[built built])
   end

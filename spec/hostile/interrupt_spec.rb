@@ -21,11 +21,7 @@ RSpec.describe "relspec under interrupts" do
   after(:all) { FileUtils.rm_rf(@dir) }
 
   def spawn_compile(out)
-    reader, writer = IO.pipe
-    pid = Process.spawn({ "XDG_CACHE_HOME" => CliRunner::CACHE }, RbConfig.ruby, CliRunner::EXE, "compile", @spec,
-                        "--out", out, "--no-check", "--jobs", "2", chdir: @dir, out: File::NULL, err: writer)
-    writer.close
-    [pid, reader]
+    spawn_relspec("compile", @spec, "--out", out, "--no-check", "--jobs", "2", chdir: @dir)
   end
 
   def tree(out)
@@ -37,11 +33,12 @@ RSpec.describe "relspec under interrupts" do
 
   it "answers SIGINT with 'interrupted' and 130 at every moment of a compile" do
     (1..12).map { |i| i * 0.15 }.each do |delay|
-      pid, stderr = spawn_compile("interrupted")
+      pid = spawn_compile("interrupted")
       sleep(delay)
-      Process.kill("INT", pid)
-      _, status = Process.wait2(pid)
-      message = stderr.read
+      signal_relspec(pid, "INT")
+      run = finish_relspec(pid)
+      status = run.status
+      message = run.stderr
       next if status.success? # finished before the signal: nothing to judge
       # Before the first line of relspec runs, Ruby's and Bundler's own boot
       # handle SIGINT their way (killed by the signal, or Bundler's message):
@@ -58,13 +55,13 @@ RSpec.describe "relspec under interrupts" do
   # every entry intact.
   it "keeps the orig cache intact when a compile is killed while writing it" do
     cache = File.join(@dir, "orig-killed", "h", ".orig")
-    pid, = spawn_compile("orig-killed")
+    pid = spawn_compile("orig-killed")
     deadline = Process.clock_gettime(Process::CLOCK_MONOTONIC) + 120
     until Dir.glob(File.join(cache, "*", ".*.relspec-#{pid}-*")).any? # .orig/<key>/
       raise "no orig cache temporary appeared" if Process.clock_gettime(Process::CLOCK_MONOTONIC) > deadline
     end
-    Process.kill("KILL", pid)
-    Process.wait(pid)
+    signal_relspec(pid, "KILL")
+    finish_relspec(pid)
 
     run = relspec("compile", @spec, "--out", "orig-killed", "--no-check", chdir: @dir)
     expect(run.exit_code).to eq(0), run.stderr
@@ -85,15 +82,15 @@ RSpec.describe "relspec under interrupts" do
     # wrap-around): its start time is not this process's, so it is stale
     reused = File.join(target, ".rock-h-base-types.relspec-#{Process.pid}-1-0badcafe")
     Dir.mkdir(reused)
-    pid, = spawn_compile("out")
+    pid = spawn_compile("out")
     deadline = Process.clock_gettime(Process::CLOCK_MONOTONIC) + 60
     until Dir.glob(File.join(target, ".*.relspec-#{pid}-*")).any?
       raise "no temporary appeared" if Process.clock_gettime(Process::CLOCK_MONOTONIC) > deadline
 
       sleep(0.01)
     end
-    Process.kill("KILL", pid)
-    Process.wait(pid)
+    signal_relspec(pid, "KILL")
+    finish_relspec(pid)
     expect(Dir.glob(File.join(target, ".*.relspec-#{pid}-*"))).not_to be_empty
 
     run = relspec("compile", @spec, "--out", "out", "--no-check", chdir: @dir)

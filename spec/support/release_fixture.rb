@@ -17,9 +17,17 @@ class ReleaseFixture
   def initialize(root)
     @root = root
     @builder = builder = DemoWorkspace.build(File.join(root, "ws"))
-    @catalog = Relspec::Catalog::AutoprojSource.load(builder.root, Relspec::ReleaseSpec::Distributions::BUILTIN.slice("bionic", "buster", "focal"))
+    @catalog = ReleaseFixture.demo_catalog(builder.root)
     File.write(File.join(root, "catalog.yml"), Relspec::Catalog::SnapshotSource.dump(@catalog))
     FileUtils.mkdir_p(File.join(root, "specs"))
+  end
+
+  # The demo workspace's catalog, read with autoproj once per test
+  # process: every fixture's workspace is a copy of one template
+  # (WorkspaceBuilder::Templates) and reads the same. Its packages are
+  # frozen.
+  def self.demo_catalog(root)
+    @demo_catalog ||= Relspec::Catalog::AutoprojSource.load(root, Relspec::ReleaseSpec::Distributions::BUILTIN.slice("bionic", "buster", "focal"))
   end
 
   # +workspace+: :snapshot (catalog.yml) or :checkouts (the workspace itself)

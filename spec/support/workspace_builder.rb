@@ -3,6 +3,7 @@
 require "fileutils"
 require "open3"
 require "yaml"
+require_relative "workspace_templates"
 
 # Creates real autoproj workspaces for tests and the shipped example: local
 # git repositories with fixed identities and dates (so commit ids never
@@ -72,11 +73,24 @@ class WorkspaceBuilder
   def create
     raise ArgumentError, "#{root} already exists" if File.exist?(root)
 
+    template = Templates.fetch(definition) { |dir| WorkspaceBuilder.new(dir, package_set: package_set_name).build_like(self) }
+    Templates.copy(template, root)
+    root
+  end
+
+  # The workspace as +other+ defines it, made here with git.
+  def build_like(other)
+    @packages, @metapackages, @layout, @excluded, @ignored, @osdeps = other.definition
     write_config
     write_package_set
     @packages.each_value { |package| create_repository(package) }
     @packages.each_value { |package| check_out(package) if package.checkout }
     root
+  end
+
+  # What the workspace holds, whatever folder it is made in.
+  def definition
+    [@packages, @metapackages, @layout, @excluded, @ignored, @osdeps]
   end
 
   def repository(name)

@@ -11,6 +11,7 @@ require "autoproj"
 require "tmpdir"
 require_relative "autoproj_messages"
 require_relative "copyright_holders"
+require_relative "package_environment"
 
 module Relspec
   class Catalog
@@ -283,7 +284,8 @@ module Relspec
           "package_set" => definition.package_set.name, "build_type" => build_type(autobuild),
           "vcs" => vcs_data(ws, definition.vcs), "source_dir" => relative(ws, autobuild.srcdir),
           "checked_out" => definition.checked_out?, "dependencies" => autobuild.dependencies.sort,
-          "optional_dependencies" => optional_packages.sort, "defines" => defines_of(ws, autobuild)
+          "optional_dependencies" => optional_packages.sort, "defines" => defines_of(ws, autobuild),
+          "environment" => PackageEnvironment.of(autobuild, root_dir: ws.root_dir)
         }.compact.merge(manifest_data(ws, autobuild.description))
       end
 

@@ -14,13 +14,14 @@ module Relspec
       BUILD_TYPES = %w[cmake orogen autotools ruby python import archive meta gem].freeze
 
       FIELDS = %i[name package_set build_type vcs commit_time version summary description license maintainer
-                  copyright source_dir checked_out dependencies optional_dependencies os_dependencies defines].freeze
+                  copyright source_dir checked_out dependencies optional_dependencies os_dependencies defines
+                  environment].freeze
 
       attr_reader(*FIELDS)
 
       def initialize(name:, package_set:, build_type:, vcs:, commit_time:, source_dir:, checked_out: true, version: nil,
                      summary: nil, description: nil, license: nil, maintainer: nil, copyright: [], dependencies: [],
-                     optional_dependencies: [], os_dependencies: {}, defines: {})
+                     optional_dependencies: [], os_dependencies: {}, defines: {}, environment: [])
         @name = name
         @package_set = package_set
         @build_type = build_type
@@ -41,6 +42,9 @@ module Relspec
         @build_dependencies = (@dependencies + @optional_dependencies).uniq.sort.freeze
         # CMake -D options of the package set (pkg.define), name => value
         @defines = (defines || {}).sort.to_h.freeze
+        # the package set's environment settings of the package, in order:
+        # [{"type" => set|add|add_path, "name", "values" (with $PREFIX)}]
+        @environment = (environment || []).map(&:freeze).freeze
         freeze
       end
 
@@ -71,7 +75,8 @@ module Relspec
           "license" => license, "maintainer" => maintainer, "copyright" => copyright, "source_dir" => source_dir,
           "checked_out" => checked_out ? nil : false,
           "dependencies" => dependencies, "optional_dependencies" => optional_dependencies,
-          "os_dependencies" => os_dependencies.transform_values(&:to_h), "defines" => defines
+          "os_dependencies" => os_dependencies.transform_values(&:to_h), "defines" => defines,
+          "environment" => environment
         }.reject { |_key, value| value.nil? || value == [] || value == {} }
       end
 
@@ -84,7 +89,7 @@ module Relspec
           source_dir: hash["source_dir"], dependencies: hash.fetch("dependencies", []),
           optional_dependencies: hash.fetch("optional_dependencies", []),
           os_dependencies: hash.fetch("os_dependencies", {}).transform_values { |deps| OsDependencies.from_h(deps) },
-          defines: hash.fetch("defines", {})
+          defines: hash.fetch("defines", {}), environment: hash.fetch("environment", [])
         )
       end
     end

@@ -64,10 +64,22 @@ module Relspec
         %w[dependencies optional_dependencies copyright].each { |key| list_of_text(entry, [key], check, prefix: path) }
         check_vcs(entry.fetch("vcs", {}), path + ["vcs"], check)
         check_os_dependencies(entry.fetch("os_dependencies", {}), path + ["os_dependencies"], check)
+        check_environment(entry.fetch("environment", []), path + ["environment"], check)
         defines = entry.fetch("defines", {})
         return unless hash?(defines, path + ["defines"], check)
 
         defines.each { |key, value| check.call(path + ["defines", key], false, "a scalar") unless SCALAR.call(value) }
+      end
+
+      def check_environment(operations, path, check)
+        return check.call(path, false, "a list") unless operations.is_a?(Array)
+
+        operations.each_with_index do |op, index|
+          next if op.is_a?(Hash) && %w[set add add_path].include?(op["type"]) && TEXT.call(op["name"]) &&
+                  op["values"].is_a?(Array) && op["values"].all?(TEXT)
+
+          check.call(path + [index], false, "{type: set|add|add_path, name: text, values: [text]}")
+        end
       end
 
       def check_vcs(vcs, path, check)

@@ -49,7 +49,7 @@ module Relspec
           "rules" => template("rules.erb", body: template("rules_#{rules_kind}.erb")),
           "source/format" => "3.0 (quilt)\n",
           "env.sh" => template("env.sh.erb"),
-          "env.yml" => EnvironmentFile.render(environment_variables),
+          "env.yml" => EnvironmentFile.render(environment_variables, more: package_environment),
           "relspec.yml" => Yaml::Writer.dump(metadata),
           "#{source}.lintian-overrides" => lintian_overrides
         }
@@ -72,7 +72,7 @@ module Relspec
                            :synopsis, :long_description, :codename, :release, :package_name, :vcs_url, :vcs_ref,
                            :commit, :date, :copyright_holders, :license, :license_name, :common_license, :public_source, :build_type, :install_dir, :dh_options,
                            :canonical, :dependency_dirs, :gem_dir, :cmake_options, :guard, :gem_file, :version,
-                           :body, :ruby_lib_dirs, keyword_init: true)
+                           :body, :ruby_lib_dirs, :package_environment, keyword_init: true)
 
       # Each template becomes a method of Context, compiled once: evaluating
       # ERB source on every render (result_with_hash) cost a no-op compile of
@@ -102,7 +102,8 @@ module Relspec
           build_type: package.build_type, install_dir: install_dir, dh_options: dh_options(package.build_type),
           canonical: Naming.canonical(package.name), dependency_dirs: dependency_dirs,
           gem_dir: GEM_DIR, cmake_options: cmake_options,
-          guard: "RELSPEC_ENV_#{source.gsub(/[^A-Za-z0-9]/, '_')}", gem_file: gem_file, ruby_lib_dirs: ruby_lib_dirs
+          guard: "RELSPEC_ENV_#{source.gsub(/[^A-Za-z0-9]/, '_')}", gem_file: gem_file, ruby_lib_dirs: ruby_lib_dirs,
+          package_environment: package_environment
         }
       end
 
@@ -309,6 +310,19 @@ module Relspec
       def changelog_date
         time = @in.package.commit_time
         Time.utc(*time.scan(/\d+/).map(&:to_i)).strftime("%a, %d %b %Y %H:%M:%S +0000")
+      end
+
+      # The package set's own settings of the package (Catalog::Package#environment)
+      # for this prefix: [[type, name, values]]. Only names a shell can
+      # export and values without shell syntax get through: anything else
+      # would be code in env.sh.
+      def package_environment
+        @in.package.environment.filter_map do |op|
+          values = op.fetch("values").map { |value| value.gsub("$PREFIX", install_dir) }
+          next unless op.fetch("name").match?(/\A[A-Za-z_][A-Za-z0-9_]*\z/) && values.none? { |value| value.match?(/["$`\\\n]/) }
+
+          [op.fetch("type"), op.fetch("name"), values]
+        end
       end
 
       # What the package adds to the environment: one prefix, no dependency

@@ -24,15 +24,25 @@ module Relspec
       module_function
 
       # +variables+: {name => [values]}, in search order, each added as a
-      # path (prepended).
-      def render(variables, type: :add_path, priority: 0)
+      # path (prepended). +more+: [[type, name, values]] of the package
+      # set's own settings; one of a name +variables+ has adds its values
+      # in front of them (set: replaces them), as the later operation does
+      # in autoproj.
+      def render(variables, type: :add_path, priority: 0, more: [])
         raise ArgumentError, "unknown environment type #{type}" unless TYPES.include?(type)
 
+        entries = variables.to_h { |name, values| [name, [type, values]] }
+        more.each do |op_type, name, values|
+          current = entries[name]
+          entries[name] = if op_type == "set" || current.nil? then [op_type.to_sym, values]
+                          else [current[0], values + current[1]]
+                          end
+        end
         out = +"---\n"
-        variables.each do |name, values|
+        entries.each do |name, (entry_type, values)|
           next if values.empty?
 
-          out << "#{name}:\n  :type: :#{type}\n  :values:\n"
+          out << "#{name}:\n  :type: :#{entry_type}\n  :values:\n"
           # package sets prepend one value after the other, so the value to
           # be searched first is written last
           values.reverse_each { |value| out << "  - #{JSON.generate(value)}\n" }

@@ -154,8 +154,14 @@ module Relspec
         Time.utc(*@input.package.commit_time.scan(/\d+/).map(&:to_i))
       end
 
+      # An upstream debian/ (utilmm has one, with debian/compat and its own
+      # .install files) is not the packaging relspec ships: mixed with the
+      # generated one, dh refused the build ("compat level specified both in
+      # debian/compat and via build-dependency"). dpkg-source -x removes it
+      # as well before unpacking the .debian.tar.xz.
       def write_debian(tree)
         debian = File.join(tree, "debian")
+        FileUtils.rm_rf(debian)
         files = DebianDir.render(@input, version: @version)
                          .merge(@overlay.debian_files(@substitutions).transform_values { |content| [content, 0o644] })
         files["rules"] = [files["rules"][0], 0o755]

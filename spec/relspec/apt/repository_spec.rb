@@ -3,6 +3,7 @@
 require "spec_helper"
 require "zlib"
 require "relspec/apt/repository"
+require_relative "../../support/signing_key"
 
 # Reads real reprepro repositories, from disk and over HTTP.
 RSpec.describe Relspec::Apt::Repository do
@@ -12,6 +13,8 @@ RSpec.describe Relspec::Apt::Repository do
       example.run
     ensure
       @server&.stop
+      # gpg-agent removes its sockets as it exits, racing the folder's removal
+      @key&.stop
     end
   end
 
@@ -70,10 +73,9 @@ RSpec.describe Relspec::Apt::Repository do
   def signing_key
     home = File.join(@dir, "gnupg")
     Dir.mkdir(home, 0o700)
-    system({ "GNUPGHOME" => home }, "gpg", "--batch", "--quiet", "--passphrase", "", "--quick-gen-key",
-           "Test Repo <repo@example.org>", "ed25519", "sign", "never", exception: true, err: File::NULL)
+    @key = SigningKey.new(home)
     keyring = File.join(@dir, "keyring.gpg")
-    File.binwrite(keyring, IO.popen({ "GNUPGHOME" => home }, %w[gpg --export], &:read))
+    File.binwrite(keyring, @key.public_keyring)
     [home, keyring]
   end
 

@@ -46,6 +46,15 @@ RSpec.describe "the real Rock package sets" do
     expect(os.apt).not_to include("gccxml")
   end
 
+  it "keeps the environment the package sets give typelib, relative to its prefix" do
+    # orocos.toolchain's definition, the importer its post_import block
+    # chose, and what rock.core adds to every package
+    expect(catalog_of.package("typelib").environment)
+      .to eq([{ "type" => "set", "name" => "TYPELIB_PLUGIN_PATH", "values" => ["$PREFIX/lib/typelib"] },
+              { "type" => "set", "name" => "TYPELIB_CXX_LOADER", "values" => ["castxml"] },
+              { "type" => "add_path", "name" => "QT_PLUGIN_PATH", "values" => ["$PREFIX/lib/qt"] }])
+  end
+
   it "runs them without writing into the workspace (rtt's block deletes a generated file)" do
     Dir.mktmpdir("relspec-real-rock-copy") do |base|
       copy = File.join(base, "workspace")

@@ -64,7 +64,9 @@ RSpec.describe Relspec::Catalog::SnapshotSource do
     "a dependency list that is text" => [/^    dependencies:\n(    - .*\n)+/, "    dependencies: base/cmake\n",
                                          "dependencies must be a list"],
     "an unknown vcs key" => [/^    vcs:\n/, "    vcs:\n      colour: red\n", "vcs.colour must be one of"],
-    "a build type that is a mapping" => [/^    build_type: .*\n/, "    build_type: { a: 1 }\n", "build_type must be text"]
+    "a build type that is a mapping" => [/^    build_type: .*\n/, "    build_type: { a: 1 }\n", "build_type must be text"],
+    "an environment setting of an unknown type" => [/(?=^    build_type: )/, "    environment: [{ type: unset, name: X, values: [] }]\n",
+                                                    "environment.0 must be {type: set|add|add_path"]
   }.each do |what, (pattern, replacement, message)|
     it "refuses #{what} at its line" do
       text = described_class.dump(@catalog)
