@@ -166,6 +166,16 @@ RSpec.describe "relspec build and publish under concurrency and faults", order: 
     expect([run.exit_code, run.stdout]).to eq([1, ""])
     expect(run.stderr).to include("error[publish-lock]: releases/conc/lock.yml was planned from another version of #{spec}", hint)
     expect(run.stderr).not_to include("Traceback", ".rb:")
+    File.write(spec_file, pristine_spec)
+
+    # a damaged lock: the hint names compile's --discard-lock, which publish does not have
+    File.write(lock, "relspec_lock: [\n")
+    run = relspec("publish", spec, "--out", "out", chdir: @dir)
+    expect([run.exit_code, run.stdout]).to eq([1, ""])
+    expect(run.stderr).to start_with("releases/conc/lock.yml:")
+    expect(run.stderr).to include("error[lock]", "hint: fix the file (it is in git), or run relspec compile #{spec} " \
+                                                 "--discard-lock (and build) again, then publish")
+    expect(File.read(lock)).to eq("relspec_lock: [\n")
     expect(File.exist?(repository)).to be(false)
   ensure
     File.write(lock, pristine_lock)

@@ -20,6 +20,7 @@ module Relspec
     # error naming it (run compile again), never a silent new plan.
     class LockedRelease
       HINT = "run relspec compile %s (and build) again, then publish"
+      DAMAGED_HINT = "fix the file (it is in git), or run relspec compile %s --discard-lock (and build) again, then publish"
 
       attr_reader :lock, :inventory
 
@@ -28,7 +29,7 @@ module Relspec
       def self.read(resolution, spec_path, timeout:)
         effective = resolution.effective
         path = Project.of_spec(spec_path).lock_path(effective.release)
-        lock = Plan::LockParser.read(path, release: effective.release)
+        lock = read_lock(path, effective.release, spec_path)
         stale!(path, spec_path, "#{effective.release} has no lock #{path} to list its repository from") unless lock
         stale!(path, spec_path, "#{path} was planned from another version of #{spec_path}") \
           unless lock.spec_digest == Plan::Lock.spec_digest(effective)
@@ -38,6 +39,17 @@ module Relspec
         stale!(path, spec_path, "#{path} is out of date: the repository of #{moved.join(', ')} holds other packages now") \
           unless moved.empty?
         new(lock, inventory)
+      end
+
+      # The lock parser's hint offers compile's --discard-lock; publish has
+      # no such option, so its reader says where that option is.
+      def self.read_lock(path, release, spec_path)
+        Plan::LockParser.read(path, release: release)
+      rescue LockError => e
+        hint = format(DAMAGED_HINT, spec_path)
+        raise LockError, (e.diagnostics.map do |found|
+          Diagnostic.error(found.rule, found.message, location: found.location, hint: hint)
+        end)
       end
 
       # "ancestor codename" of every ancestor whose content digest differs
@@ -52,7 +64,7 @@ module Relspec
         raise InvalidInput, [Diagnostic.error("publish-lock", message, location: Location.file_only(path),
                                                                        hint: format(HINT, spec_path))]
       end
-      private_class_method :moved_ancestors, :stale!
+      private_class_method :read_lock, :moved_ancestors, :stale!
 
       def initialize(lock, inventory)
         @lock = lock
