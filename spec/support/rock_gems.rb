@@ -13,6 +13,7 @@ require_relative "gem_builder"
 module RockGems
   CACHE = File.expand_path("../../tmp/gems", __dir__)
   FETCH_TIMEOUT = 60 # seconds for one `gem fetch`
+  FETCH_ATTEMPTS = 3 # the registry copy served here once failed one fetch in a CI run and answered the next minute
 
   module_function
 
@@ -43,9 +44,12 @@ module RockGems
     return path if File.file?(path)
 
     FileUtils.mkdir_p(CACHE)
-    _output, status = Open3.capture2e("timeout", FETCH_TIMEOUT.to_s, "gem", "fetch", name, "-v", version,
-                                      "--platform", "ruby", chdir: CACHE)
-    status.success? && File.file?(path) ? path : nil
+    FETCH_ATTEMPTS.times do
+      _output, status = Open3.capture2e("timeout", FETCH_TIMEOUT.to_s, "gem", "fetch", name, "-v", version,
+                                        "--platform", "ruby", chdir: CACHE)
+      return path if status.success? && File.file?(path)
+    end
+    nil
   end
 
   # What utilrb/logger uses of facets 3.1.0, written for the stand-in.
