@@ -9,10 +9,12 @@ module Relspec
     # (+install_dir+), its +dependencies+ (Dependency, in the package's
     # order), its OS dependencies resolved for the codename (+apt+ names,
     # distribution +gems+ as ruby-<gem>) and, for a gem of the release, the
-    # +gem+ archive (nil otherwise). Immutable.
+    # +gem+ archive (nil otherwise), and +ruby_dirs+: where the target's Ruby
+    # would have a compiled package install Ruby code, relative to the
+    # prefix (Distribution#ruby_install_dirs). Immutable.
     BuildInput = Struct.new(:package, :deb_name, :upstream, :codename, :release, :maintainer, :install_dir,
-                            :debhelper_compat, :dependencies, :apt, :gems, :gem, keyword_init: true) do
-      def initialize(debhelper_compat: BuildInput::DEFAULT_COMPAT, gem: nil, **fields)
+                            :debhelper_compat, :dependencies, :apt, :gems, :gem, :ruby_dirs, keyword_init: true) do
+      def initialize(debhelper_compat: BuildInput::DEFAULT_COMPAT, gem: nil, ruby_dirs: [], **fields)
         super
         freeze
       end

@@ -165,10 +165,16 @@ module Relspec
       # release's version for the next: only RUBYLIB makes the release's
       # version win. A gem of the release: its require paths (facets 3.1.0
       # has lib/core and lib/standard); other packages: <prefix>/lib (a Ruby
-      # package's gem links it to its lib/).
+      # package's gem links it to its lib/), and for a compiled one also the
+      # target Ruby's folders below the prefix, where CMake projects put
+      # their bindings (typelib); autoproj adds them for a source-built
+      # package when they exist (Autobuild::Environment#add_prefix).
       def ruby_lib_dirs
         gem = @in.gem
-        return ["#{install_dir}/lib"] unless gem && @in.package.build_type == "gem"
+        unless gem && @in.package.build_type == "gem"
+          compiled = DH_OPTIONS.key?(@in.package.build_type) ? @in.ruby_dirs : []
+          return ["lib", *compiled].map { |dir| "#{install_dir}/#{dir}" }
+        end
 
         full_name = gem_file.delete_suffix(".gem")
         gem.spec.require_paths.map { |path| "#{install_dir}/#{GEM_DIR}/gems/#{full_name}/#{path}" }

@@ -26,10 +26,11 @@ module Relspec
       def for(target, decision, upstream, decisions)
         package = @release_catalog.catalog.package(decision.package)
         os = package.os_dependencies_for(target.codename)
+        distribution = @effective.distributions.fetch(target.codename)
         Debian::BuildInput.new(
           package: package, deb_name: decision.deb_name, upstream: upstream, codename: target.codename,
           release: @effective.release, maintainer: @effective.maintainer, install_dir: install_dir_of(decision),
-          debhelper_compat: @effective.distributions.fetch(target.codename).debhelper_compat,
+          debhelper_compat: distribution.debhelper_compat, ruby_dirs: distribution.ruby_install_dirs(target.arch),
           dependencies: dependencies_of(package, decisions), apt: os.apt,
           gems: Debian::ControlRelations.distribution_gems(os, @release_catalog.gems.keys),
           gem: @release_catalog.gems[package.name]

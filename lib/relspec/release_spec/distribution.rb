@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require_relative "../error"
+require_relative "architectures"
 
 module Relspec
   module ReleaseSpec
@@ -22,6 +23,19 @@ module Relspec
       # autoproj's keyword for the distribution's Ruby ("ruby31"), or nil.
       def ruby_version_keyword
         ruby && "ruby#{ruby.delete('.')}"
+      end
+
+      # Where a package built for +arch+ that installs Ruby code the way the
+      # distribution's Ruby lays it out (a CMake project asking RbConfig for
+      # rubylibdir and archdir, as typelib's bindings do) puts it, relative to
+      # its prefix; empty when the distribution's Ruby is not known. Ruby
+      # "3.1" keeps its libraries in lib/ruby/3.1.0.
+      def ruby_install_dirs(arch)
+        return [] unless ruby
+
+        abi = "#{ruby}.0"
+        tuple = Architectures::MULTIARCH[arch]
+        ["lib/ruby/#{abi}", *(tuple && "lib/#{tuple}/ruby/#{abi}")]
       end
 
       def osdeps_type_key

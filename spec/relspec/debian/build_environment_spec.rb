@@ -4,6 +4,7 @@ require "spec_helper"
 require "open3"
 require "relspec/debian/debian_dir"
 require "relspec/catalog/package"
+require "relspec/release_spec/distribution"
 
 # The build environment of debian/rules (docs/compile.md): rules names only
 # the direct dependencies and takes the rest from their installed env.sh.
@@ -19,7 +20,7 @@ RSpec.describe "debian/rules build environment" do
 
   # Renders +name+ (depending on +dependencies+, already installed) and
   # installs its env.sh into its prefix; returns its debian/rules.
-  def package(name, dependencies)
+  def package(name, dependencies, ruby_dirs: [])
     catalog_package = Relspec::Catalog::Package.new(
       name: name, package_set: "set", build_type: "cmake", commit_time: "2021-03-04T05:06:07Z", source_dir: "src/#{name}",
       vcs: Relspec::Catalog::Vcs.from_h("type" => "git", "url" => "https://example.org/x.git", "commit" => "a" * 40),
@@ -30,12 +31,13 @@ RSpec.describe "debian/rules build environment" do
     end
     input = Relspec::Debian::BuildInput.new(
       package: catalog_package, deb_name: deb(name), upstream: "0.1", codename: "bookworm", release: "r",
-      maintainer: "M <m@example.org>", install_dir: prefix(name), apt: [], gems: [], dependencies: dependency_inputs
+      maintainer: "M <m@example.org>", install_dir: prefix(name), apt: [], gems: [], dependencies: dependency_inputs,
+      ruby_dirs: ruby_dirs
     )
-    files = Relspec::Debian::DebianDir.render(input, version: "0.1-1~bookworm").transform_values(&:first)
+    @files = Relspec::Debian::DebianDir.render(input, version: "0.1-1~bookworm").transform_values(&:first)
     FileUtils.mkdir_p(prefix(name))
-    File.write(File.join(prefix(name), "env.sh"), files.fetch("env.sh"))
-    files.fetch("rules")
+    File.write(File.join(prefix(name), "env.sh"), @files.fetch("env.sh"))
+    @files.fetch("rules")
   end
 
   def deb(name) = "rock-r-#{name.tr('/', '-')}"
@@ -83,5 +85,31 @@ RSpec.describe "debian/rules build environment" do
     rules = package("base/cmake", [])
     expect(rules).not_to include("RELSPEC_DEPENDENCIES")
     expect(build_environment(rules).fetch("CMAKE_PREFIX_PATH")).to eq("/stale")
+  end
+
+  # typelib's CMake installs its Ruby bindings where RbConfig says, below
+  # its prefix: lib/ruby/3.1.0 and lib/x86_64-linux-gnu/ruby/3.1.0 on
+  # bookworm/amd64. A real Ruby requires both through env.sh alone.
+  it "puts the target Ruby's folders below a compiled package's prefix on RUBYLIB" do
+    dirs = Relspec::ReleaseSpec::Distributions::BUILTIN.fetch("bookworm").ruby_install_dirs("amd64")
+    expect(dirs).to eq(%w[lib/ruby/3.1.0 lib/x86_64-linux-gnu/ruby/3.1.0])
+    package("tools/typelib", [], ruby_dirs: dirs)
+    { "lib/ruby/3.1.0/typelib.rb" => "require 'typelib_ruby'\nTYPELIB = :pure",
+      "lib/x86_64-linux-gnu/ruby/3.1.0/typelib_ruby.rb" => "TYPELIB_RUBY = :ext" }.each do |path, code|
+      FileUtils.mkdir_p(File.dirname(File.join(prefix("tools/typelib"), path)))
+      File.write(File.join(prefix("tools/typelib"), path), code)
+    end
+    out, err, status = Open3.capture3({ "RUBYLIB" => nil }, "sh", "-c",
+                                      ". #{prefix('tools/typelib')}/env.sh && ruby -e 'require \"typelib\"; p [TYPELIB, TYPELIB_RUBY]'")
+    expect(status).to be_success, err
+    expect(out).to eq("[:pure, :ext]\n")
+    yml = YAML.safe_load(@files.fetch("env.yml"), permitted_classes: [Symbol])
+    expect(yml.fetch("RUBYLIB").fetch(:values)).to include(*dirs.map { |dir| "#{prefix('tools/typelib')}/#{dir}" })
+  end
+
+  it "keeps a package the target's Ruby is unknown for on <prefix>/lib" do
+    expect(Relspec::ReleaseSpec::Distribution.define("sid", "debian", %w[sid]).ruby_install_dirs("amd64")).to eq([])
+    package("base/cmake", [])
+    expect(@files.fetch("env.sh")).to include("export RUBYLIB=\"#{prefix('base/cmake')}/lib${RUBYLIB")
   end
 end
