@@ -12,6 +12,8 @@ require_relative "builder/build_results"
 require_relative "builder/target_lock"
 require_relative "publish/repository_config"
 require_relative "publish/repository_lock"
+require_relative "publish/stale_reprepro_lock"
+require_relative "publish/database_snapshot"
 require_relative "publish/upload"
 require_relative "publish/pool_guard"
 require_relative "publish/reprepro"
@@ -30,7 +32,11 @@ module Relspec
     # repository had already, +left_out+ the failed/skipped entries, +built+
     # false when the target has no build-results.yml.
     TargetResult = Struct.new(:target, :results_path, :published, :held, :left_out, :built, keyword_init: true)
-    Result = Struct.new(:release, :repository, :targets, :osdeps_written, :osdeps_missing, keyword_init: true)
+    # +stale_lock+: reprepro's lock file a killed reprepro had left, removed
+    # before publishing (nil: there was none); +rolled_back+: the database
+    # of an interrupted publish was put back first (DatabaseSnapshot).
+    Result = Struct.new(:release, :repository, :targets, :osdeps_written, :osdeps_missing, :stale_lock, :rolled_back,
+                        keyword_init: true)
 
     # +target+: "codename/arch" or nil (all targets); +waiting+: called
     # when another publisher holds the repository.
@@ -75,10 +81,15 @@ module Relspec
       SigningKey.check(sign_with) if sign_with
       config = RepositoryConfig.new(release: effective.release, targets: all, sign_with: sign_with)
       RepositoryLock.hold(repository, waiting: waiting) do
-        targets = include_targets(repository, config, results, uploads)
+        stale_lock = StaleRepreproLock.clear(repository)
+        rolled_back = false
+        targets = DatabaseSnapshot.guard(repository) do |restored|
+          rolled_back = restored
+          include_targets(repository, config, results, uploads, export: restored)
+        end
         written, missing = write_osdeps(locked, effective, repository)
         Result.new(release: effective.release, repository: repository, targets: targets, osdeps_written: written,
-                   osdeps_missing: missing)
+                   osdeps_missing: missing, stale_lock: stale_lock, rolled_back: rolled_back)
       end
     end
 
@@ -103,7 +114,9 @@ module Relspec
       nil
     end
 
-    def self.include_targets(repository, config, results, uploads)
+    # +export+: write dists/ again even if the configuration is unchanged
+    # (they may be newer than a database put back).
+    def self.include_targets(repository, config, results, uploads, export:)
       reprepro = Reprepro.new(repository)
       changed = write_config(repository, config)
       PoolGuard.check(repository, uploads.values.flatten.flat_map(&:items))
@@ -121,7 +134,7 @@ module Relspec
       end
       # A new or changed configuration reaches dists/ (distributions without
       # packages, a new signing key) only by an export.
-      reprepro.export if changed
+      reprepro.export if changed || export
       targets
     end
 

@@ -64,6 +64,12 @@ RSpec.describe "relspec build and publish under concurrency and faults", order: 
       output, status = reprepro(command)
       expect(status).to be_success, "reprepro #{command}: #{output}"
     end
+    expect_dists_consistent
+  end
+
+  # What apt clients read is whole: every file a Release lists has the
+  # bytes listed.
+  def expect_dists_consistent
     Dir.glob(File.join(repository, "dists", "*", "Release")).each do |release|
       listed = File.read(release)[/^SHA256:\n((?: .*\n)*)/, 1].to_s.lines.map(&:split)
       expect(listed).not_to be_empty
@@ -208,9 +214,47 @@ RSpec.describe "relspec build and publish under concurrency and faults", order: 
     end
   end
 
+  # What a reprepro killed while holding its lock leaves (the fault below
+  # leaves it when the kill comes late enough): publish removes it, since
+  # no reprepro uses the repository, says so, and completes.
+  it "removes reprepro's stale lock file left by a killed reprepro, says so, and publishes" do
+    expect_publish_completes
+    lock = File.join(repository, "db", "lockfile")
+    File.write(lock, "")
+    status, message = spawned("publish", spec, "--out", "out")
+    expect(status.exitstatus).to eq(0), message
+    expect(message).to include("removed reprepro's stale lock #{lock} (no reprepro uses the repository")
+    expect(File.exist?(lock)).to be(false)
+    expect_consistent
+    expect_published
+  end
+
+  # The state a publish killed inside a database write leaves, made by
+  # hand: its marker and copy, a database reprepro cannot open, reprepro's
+  # lock file. Without the copy put back, every later reprepro fails.
+  it "puts back the database of an interrupted publish when reprepro's is broken, and publishes" do
+    expect_publish_completes
+    db = File.join(repository, "db")
+    FileUtils.cp_r(db, File.join(repository, ".relspec-db-before-publish"))
+    File.write(File.join(repository, ".relspec-publish-unfinished"), "")
+    File.write(File.join(db, "packages.db"), "not a Berkeley DB file\n" * 100)
+    output, status = reprepro("check")
+    expect([status.success?, output]).to match([false, /packages\.db/])
+    File.write(File.join(db, "lockfile"), "")
+    status, message = spawned("publish", spec, "--out", "out")
+    expect(status.exitstatus).to eq(0), message
+    expect(message).to include("the last publish into #{repository} was interrupted: its database was put back")
+    expect_consistent
+    expect_published
+  end
+
   # A fault-injecting wrapper around reprepro (first in PATH): its k-th call
   # starts the real reprepro, then kills it and relspec with SIGKILL, for
-  # every k until a publish runs to its end.
+  # every k until a publish runs to its end. What a kill leaves: dists/
+  # whole for apt (reprepro replaces its files by renaming), and, when
+  # reprepro died inside a database write, a database no reprepro can open
+  # (Berkeley DB, no journal) or its stale lock file; the next publish puts
+  # back the database the last finished publish left and completes.
   it "keeps the repository consistent when publish is killed at any reprepro step, and a re-run completes" do
     FileUtils.rm_rf(repository)
     bin = File.join(@dir, "killer-bin")
@@ -228,13 +272,20 @@ RSpec.describe "relspec build and publish under concurrency and faults", order: 
       File.write(counter, "0")
       status, message = spawned("publish", spec, "--out", "out",
                                 env: { "PATH" => "#{bin}:#{ENV.fetch('PATH')}", "KILL_AT" => k.to_s, "KILL_COUNTER" => counter })
-      expect_consistent
-      next false if File.read(counter).to_i < k # ran to its end before the k-th call
+      expect_dists_consistent
+      if File.read(counter).to_i < k # ran to its end before the k-th call
+        expect(status.exitstatus).to eq(0), message
+        expect(message).to include("was interrupted: its database was put back") if k > 1
+        next false
+      end
 
       expect(status.termsig).to eq(9), message
+      expect(File.exist?(File.join(repository, ".relspec-publish-unfinished"))).to be(true)
       true
     end
     expect(killed.size).to be >= 3
-    expect_publish_completes
+    expect_consistent
+    expect_published
+    expect(Dir.children(repository)).not_to include(".relspec-publish-unfinished", ".relspec-db-before-publish")
   end
 end

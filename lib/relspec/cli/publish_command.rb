@@ -19,6 +19,14 @@ module Relspec
       def call
         result = Publish.run(@path, out: @out, target: @target, timeout: @timeout,
                                     waiting: -> { @err.puts("waiting for another relspec publish to finish…") })
+        if result.stale_lock
+          @err.puts("removed reprepro's stale lock #{result.stale_lock} (no reprepro uses the repository: " \
+                    "one was killed before it could remove it)")
+        end
+        if result.rolled_back
+          @err.puts("the last publish into #{result.repository} was interrupted: its database was put back " \
+                    "as the publish before it left it, and everything was included again")
+        end
         result.targets.each { |target| report(target) }
         @io.puts("#{result.release}: #{result.repository}: #{result.osdeps_written.zero? ? 'osdeps unchanged' : "wrote #{result.osdeps_written} osdeps files"}")
         note_missing(result.osdeps_missing)
