@@ -1,7 +1,7 @@
 # frozen_string_literal: true
 
 require_relative "ancestor"
-require_relative "../apt/dependency"
+require_relative "archive_versions"
 require_relative "../apt/repository"
 require_relative "../apt/version"
 require_relative "../diagnostic"
@@ -29,7 +29,7 @@ module Relspec
           next unless archive
 
           repository = Ancestors.archive_reader(archive, spec_dir, fetcher_options, cache)
-          found[target] = versions(repository, archive, target, wanted)
+          found[target] = versions(repository, archive, target, wanted, cache)
         rescue Apt::Repository::Missing => e
           # e.g. Ubuntu's arm64 lives on ports.ubuntu.com, not in the amd64 archive
           gaps[target] = e.message
@@ -46,12 +46,12 @@ module Relspec
       # from the packages of that name and from versioned Provides: Ruby's
       # default gems are ruby-<gem> virtual packages of libruby<version>
       # ("Provides: ruby-date (= 3.2.2)" on bookworm).
-      def self.versions(repository, archive, target, wanted)
+      def self.versions(repository, archive, target, wanted, cache)
         (archive["components"] || ["main"]).each_with_object({}) do |component, out|
-          index = repository.packages(target.codename, target.arch, component: component)
+          index = ArchiveVersions.of(repository, target, component, cache)
           names = wanted.is_a?(Regexp) ? index.names.grep(wanted) : wanted
-          names.each { |name| newest(out, name, index[name]&.version) }
-          provided(index, wanted) { |name, version| newest(out, name, version) }
+          names.each { |name| newest(out, name, index.version(name)) }
+          index.each_provided(wanted) { |name, version| newest(out, name, version) }
         end
       end
       private_class_method :versions
@@ -60,29 +60,6 @@ module Relspec
         out[name] = version if version && (out[name].nil? || Apt::Version.parse(version) > Apt::Version.parse(out[name]))
       end
       private_class_method :newest
-
-      # The wanted names some package provides at a version.
-      def self.provided(index, wanted)
-        index.names.each do |package|
-          field = index[package].provides
-          next unless field&.include?("=")
-
-          relations(field).each do |relation|
-            next unless relation.operator == "=" && (wanted.is_a?(Regexp) ? wanted.match?(relation.name) : wanted.include?(relation.name))
-
-            yield relation.name, relation.version
-          end
-        end
-      end
-      private_class_method :provided
-
-      # A Provides field this reader cannot parse provides nothing it asks about.
-      def self.relations(field)
-        Apt::Dependency.parse(field).flatten
-      rescue ArgumentError
-        []
-      end
-      private_class_method :relations
 
       attr_reader :unknown, :gaps
 
