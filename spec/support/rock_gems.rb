@@ -23,7 +23,9 @@ module RockGems
   REDIRECTS = 3
   SHA256 = {
     "facets-3.1.0.gem" => "7834a68824efbb35380ed7f6f590e01fb9a31a9466e317210e8803f72813c345",
-    "rice-3.0.0.gem" => "df7708498dcf41fba067c940bf40840c0b019fb75bd3aca7a8938904c6695ae1"
+    "rice-3.0.0.gem" => "df7708498dcf41fba067c940bf40840c0b019fb75bd3aca7a8938904c6695ae1",
+    # bin/toolchain: what Rock's osdeps ask of rake-compiler (rtt_typelib, typelib)
+    "rake-compiler-0.8.3.gem" => "37cfbbff2fa330ac2eee2947a505ae537df4394a64001588493904d419c98e1f"
   }.freeze
 
   module_function
@@ -43,6 +45,8 @@ module RockGems
     provide(dir, "rice", "3.0.0")
   end
 
+  # Puts <name>-<version>.gem into +dir+ (one of SHA256's); false when it
+  # cannot be had.
   def provide(dir, name, version)
     FileUtils.mkdir_p(dir)
     cached = fetch(name, version)
