@@ -49,12 +49,13 @@ class BuildRelease
     File.join(dir, "specs", "#{name}.yml")
   end
 
-  # +spec+: more of the spec (YAML lines), e.g. its repository.
-  def compile(spec: "")
+  # +spec+: more of the spec (YAML lines), e.g. its repository; +targets+:
+  # the spec's targets (YAML flow mapping).
+  def compile(spec: "", targets: "{ bookworm: [amd64] }")
     @builder.layout(*@names)
     @builder.create
     FileUtils.mkdir_p(File.dirname(spec_path))
-    File.write(spec_path, "release: #{name}\nworkspace: ../ws/workspace\ntargets: { bookworm: [amd64] }\n" \
+    File.write(spec_path, "release: #{name}\nworkspace: ../ws/workspace\ntargets: #{targets}\n" \
                           "maintainer: Demo <demo@example.org>\n#{spec}")
     output, status = Open3.capture2e(RbConfig.ruby, EXE, "compile", "specs/#{name}.yml", "--out", "out", chdir: dir)
     raise "relspec compile failed: #{output}" unless status.success?
@@ -62,8 +63,8 @@ class BuildRelease
     self
   end
 
-  def target_dir
-    File.join(dir, "out", name, "bookworm-amd64")
+  def target_dir(target = "bookworm-amd64")
+    File.join(dir, "out", name, target)
   end
 
   # The Debian source name of a package.
