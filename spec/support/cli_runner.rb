@@ -4,6 +4,7 @@ require "open3"
 require "rbconfig"
 require "tmpdir"
 require "fileutils"
+require_relative "preloaded_relspec"
 
 # Runs the real relspec executable in a child process, as a user would, and
 # notes the child's peak memory (GNU time's maximum resident set size) so
@@ -50,20 +51,28 @@ module CliRunner
   CACHE = Dir.mktmpdir("relspec-test-cache")
   at_exit { FileUtils.rm_rf(CACHE) }
 
-  # +env+: more environment variables; +umask+: the child's umask.
+  # +env+: more environment variables; +umask+: the child's umask. Runs in
+  # a child of the preloaded relspec where that is the same as a process
+  # of its own (PreloadedRelspec).
   def relspec(*args, chdir: ROOT, env: {}, umask: nil)
-    options = { chdir: chdir, stdin_data: "" }
-    options[:umask] = umask if umask
-    Dir.mktmpdir("relspec-run") do |dir|
-      report = File.join(dir, "rss")
-      # -q: the report holds the number only, whatever the exit status
-      stdout, stderr, status = Open3.capture3(child_environment(env), TIME, "-q", "-o", report,
-                                              "-f", "%M", RbConfig.ruby, EXE, *args, **options)
-      run = Run.new(args: args, stdout: stdout, stderr: stderr, status: status, max_rss_kib: File.read(report).to_i)
-      relspec_runs << run
-      run
+    environment = child_environment(env)
+    run = if PreloadedRelspec.serves?(environment, umask)
+            stdout, stderr, status, rss = CliRunner.preloaded.run(args, chdir: chdir, env: environment)
+            Run.new(args: args, stdout: stdout, stderr: stderr, status: status, max_rss_kib: rss)
+          else
+            spawned_run(args, chdir, environment, umask)
+          end
+    relspec_runs << run
+    run
+  end
+
+  # The preloaded relspec of this test process, started on first use.
+  def self.preloaded
+    PRELOADED_LOCK.synchronize do
+      @preloaded ||= PreloadedRelspec.new(EXE).tap { |server| at_exit { server.stop } }
     end
   end
+  PRELOADED_LOCK = Mutex.new
 
   # Starts relspec in the background, for tests that signal it or race it
   # against another run; its stdout is discarded. Returns the pid, which
@@ -99,6 +108,18 @@ module CliRunner
   end
 
   private
+
+  def spawned_run(args, chdir, environment, umask)
+    options = { chdir: chdir, stdin_data: "" }
+    options[:umask] = umask if umask
+    Dir.mktmpdir("relspec-run") do |dir|
+      report = File.join(dir, "rss")
+      # -q: the report holds the number only, whatever the exit status
+      stdout, stderr, status = Open3.capture3(environment, TIME, "-q", "-o", report, "-f", "%M", RbConfig.ruby, EXE,
+                                              *args, **options)
+      Run.new(args: args, stdout: stdout, stderr: stderr, status: status, max_rss_kib: File.read(report).to_i)
+    end
+  end
 
   def child_environment(env)
     { "XDG_CACHE_HOME" => CACHE }.merge(env)
