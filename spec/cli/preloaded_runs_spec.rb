@@ -19,8 +19,8 @@ RSpec.describe "relspec runs forked from the preloaded relspec" do
       own = spawned(*args)
       expect(preloaded.status).to be_a(PreloadedRelspec::Status)
       expect(own.status).to be_a(Process::Status)
-      expect([preloaded.stdout, preloaded.stderr, preloaded.exit_code]).to eq([own.stdout, own.stderr, own.exit_code]),
-                                                                          "relspec #{args.join(' ')}"
+      seen = [preloaded.stdout, preloaded.stderr, preloaded.exit_code]
+      expect(seen).to eq([own.stdout, own.stderr, own.exit_code]), "relspec #{args.join(' ')}"
     end
   end
 
