@@ -43,6 +43,19 @@ class PreloadedRelspec
     end
   end
 
+  # One message of the socket's protocol, for both sides: its size, then
+  # the Marshal of +value+.
+  def self.write_message(connection, value)
+    payload = Marshal.dump(value)
+    connection.write([payload.bytesize].pack("N"), payload)
+  end
+
+  # The next message, or nil when the other side closed the connection.
+  def self.read_message(connection)
+    size = connection.read(4) or return nil
+    Marshal.load(connection.read(size.unpack1("N"))) # rubocop:disable Security/MarshalLoad -- between the test process and its own server
+  end
+
   def self.serves?(env, umask)
     ENV["RELSPEC_TEST_SPAWN"].nil? && umask.nil? && env.keys.none? { |name| name.match?(START_UP_VARIABLES) }
   end
@@ -65,8 +78,10 @@ class PreloadedRelspec
         # read while it runs: a full pipe would stop the child
         Thread.new { reader.read.tap { reader.close } }
       end
-      write_message(connection, [args, chdir, ENV.to_h.merge(env).compact])
-      pid, exitstatus, termsig, rss = read_message(connection)
+      PreloadedRelspec.write_message(connection, [args, chdir, ENV.to_h.merge(env).compact])
+      answer = PreloadedRelspec.read_message(connection) or
+        raise "the preloaded relspec ended a run without an answer:\n#{File.read(@log)}"
+      pid, exitstatus, termsig, rss = answer
       [readers[0].value, readers[1].value, Status.new(pid, exitstatus, termsig), rss]
     end
   end
@@ -94,15 +109,5 @@ class PreloadedRelspec
 
       sleep(0.02)
     end
-  end
-
-  def write_message(connection, value)
-    payload = Marshal.dump(value)
-    connection.write([payload.bytesize].pack("N"), payload)
-  end
-
-  def read_message(connection)
-    size = connection.read(4) or raise "the preloaded relspec ended a run without an answer:\n#{File.read(@log)}"
-    Marshal.load(connection.read(size.unpack1("N"))) # rubocop:disable Security/MarshalLoad -- from our own server
   end
 end

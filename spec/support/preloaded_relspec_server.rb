@@ -8,10 +8,12 @@
 # SOCKET in a process of its own, which forks the run's relspec: that child
 # takes the request's standard output and error, environment, working
 # folder and arguments and then loads EXE itself, so everything after
-# Ruby's and Bundler's start-up is the executable's own code. The connection's process waits for the child and
-# answers with its pid, exit status or signal, and its peak memory.
+# Ruby's and Bundler's start-up is the executable's own code. The
+# connection's process waits for the child and answers with its pid, exit
+# status or signal, and its peak memory.
 require "io/wait"
 require "socket"
+require_relative "preloaded_relspec"
 
 exe, socket_path = ARGV
 root = File.expand_path("..", File.dirname(exe))
@@ -24,16 +26,6 @@ end
 # and the constants those gems load on first use (dry-schema's and
 # dry-types' through Zeitwerk: ~0.2 s of a first validation)
 Zeitwerk::Loader.eager_load_all if defined?(Zeitwerk::Loader)
-
-def read_message(connection)
-  size = connection.read(4)&.unpack1("N") or return nil
-  Marshal.load(connection.read(size)) # rubocop:disable Security/MarshalLoad -- from the test process only
-end
-
-def write_message(connection, value)
-  payload = Marshal.dump(value)
-  connection.write([payload.bytesize].pack("N"), payload)
-end
 
 # The child that is the relspec run. Its peak memory (VmHWM) is what GNU
 # time reports for a process of its own; written from the last at_exit
@@ -56,7 +48,7 @@ end
 def serve(connection, exe, report_dir)
   out = connection.recv_io
   err = connection.recv_io
-  request = read_message(connection)
+  request = PreloadedRelspec.read_message(connection)
   report = File.join(report_dir, "rss-#{Process.pid}")
   child = fork do
     connection.close
@@ -64,9 +56,9 @@ def serve(connection, exe, report_dir)
   end
   [out, err].each(&:close)
   _, status = Process.wait2(child)
-  rss = File.file?(report) ? File.read(report).to_i : nil
-  File.delete(report) if File.file?(report)
-  write_message(connection, [child, status.exitstatus, status.termsig, rss])
+  rss = File.read(report).to_i if File.file?(report)
+  FileUtils.rm_f(report)
+  PreloadedRelspec.write_message(connection, [child, status.exitstatus, status.termsig, rss])
 end
 
 server = UNIXServer.new(socket_path)
