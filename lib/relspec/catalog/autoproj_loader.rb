@@ -12,6 +12,8 @@ require "tmpdir"
 require_relative "autoproj_messages"
 require_relative "copyright_holders"
 require_relative "package_environment"
+require_relative "orogen_arguments"
+require_relative "cmake_defines"
 
 module Relspec
   class Catalog
@@ -230,8 +232,9 @@ module Relspec
         Rake::Task.clear
         Autoproj.workspace = nil
         Autobuild.env = nil
-        # package sets set project-wide CMake flags here (Autobuild::CMake.define)
-        Autobuild::CMake.defines.clear
+        # package sets set project-wide build settings in autobuild's classes
+        CmakeDefines.reset
+        OrogenArguments.reset
       end
 
       def extract(ws, manifests)
@@ -284,22 +287,10 @@ module Relspec
           "package_set" => definition.package_set.name, "build_type" => build_type(autobuild),
           "vcs" => vcs_data(ws, definition.vcs), "source_dir" => relative(ws, autobuild.srcdir),
           "checked_out" => definition.checked_out?, "dependencies" => autobuild.dependencies.sort,
-          "optional_dependencies" => optional_packages.sort, "defines" => defines_of(ws, autobuild),
-          "environment" => PackageEnvironment.of(autobuild, root_dir: ws.root_dir)
+          "optional_dependencies" => optional_packages.sort, "defines" => CmakeDefines.of(autobuild, root_dir: ws.root_dir),
+          "environment" => PackageEnvironment.of(autobuild, root_dir: ws.root_dir),
+          "orogen_arguments" => OrogenArguments.of(autobuild)
         }.compact.merge(manifest_data(ws, autobuild.description))
-      end
-
-      # The -D options autoproj would give CMake for this package: the
-      # package set's global ones (Autobuild::CMake.define), then the
-      # package's own (pkg.define); not the prefix and paths autoproj derives
-      # from its own layout, which the release decides. A value naming a
-      # folder of the workspace is kept relative to $AUTOPROJ_ROOT.
-      def defines_of(ws, autobuild)
-        return nil unless autobuild.respond_to?(:defines)
-
-        defines = Autobuild::CMake.defines.merge(autobuild.defines)
-        defines = defines.to_h { |key, value| [key.to_s, value.to_s.gsub(ws.root_dir, "$AUTOPROJ_ROOT")] }
-        defines.empty? ? nil : defines.sort.to_h
       end
 
       def build_type(autobuild)

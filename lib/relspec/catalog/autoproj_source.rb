@@ -111,7 +111,7 @@ module Relspec
             summary: entry["summary"], description: entry["description"], license: entry["license"],
             maintainer: entry["maintainer"], copyright: entry["copyright"], dependencies: entry["dependencies"],
             optional_dependencies: entry["optional_dependencies"], defines: entry["defines"],
-            environment: entry["environment"],
+            environment: entry["environment"], orogen_arguments: entry["orogen_arguments"],
             os_dependencies: entry["os_dependencies"].transform_values { |deps| OsDependencies.from_h(deps) }
           )
           [name, package]

@@ -79,7 +79,8 @@ module Relspec
       # Changes to relspec's reading code make old entries useless.
       def loader_version
         @loader_version ||= Digest::SHA256.hexdigest(
-          %w[autoproj_loader.rb autoproj_source.rb package.rb package_environment.rb snapshot_source.rb].map { |f| File.read(File.join(__dir__, f)) }.join
+          %w[autoproj_loader.rb autoproj_source.rb package.rb package_environment.rb orogen_arguments.rb cmake_defines.rb
+             snapshot_source.rb].map { |f| File.read(File.join(__dir__, f)) }.join
         )
       end
 

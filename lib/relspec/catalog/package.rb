@@ -15,13 +15,14 @@ module Relspec
 
       FIELDS = %i[name package_set build_type vcs commit_time version summary description license maintainer
                   copyright source_dir checked_out dependencies optional_dependencies os_dependencies defines
-                  environment].freeze
+                  environment orogen_arguments].freeze
 
       attr_reader(*FIELDS)
 
       def initialize(name:, package_set:, build_type:, vcs:, commit_time:, source_dir:, checked_out: true, version: nil,
                      summary: nil, description: nil, license: nil, maintainer: nil, copyright: [], dependencies: [],
-                     optional_dependencies: [], os_dependencies: {}, defines: {}, environment: [])
+                     optional_dependencies: [], os_dependencies: {}, defines: {}, environment: [],
+                     orogen_arguments: [])
         @name = name
         @package_set = package_set
         @build_type = build_type
@@ -45,6 +46,9 @@ module Relspec
         # the package set's environment settings of the package, in order:
         # [{"type" => set|add|add_path, "name", "values" (with $PREFIX)}]
         @environment = (environment || []).map(&:freeze).freeze
+        # an oroGen package's generator words, as autoproj gives them
+        # (Catalog::OrogenArguments); empty for other build types
+        @orogen_arguments = (orogen_arguments || []).dup.freeze
         freeze
       end
 
@@ -76,7 +80,7 @@ module Relspec
           "checked_out" => checked_out ? nil : false,
           "dependencies" => dependencies, "optional_dependencies" => optional_dependencies,
           "os_dependencies" => os_dependencies.transform_values(&:to_h), "defines" => defines,
-          "environment" => environment
+          "environment" => environment, "orogen_arguments" => orogen_arguments
         }.reject { |_key, value| value.nil? || value == [] || value == {} }
       end
 
@@ -89,7 +93,8 @@ module Relspec
           source_dir: hash["source_dir"], dependencies: hash.fetch("dependencies", []),
           optional_dependencies: hash.fetch("optional_dependencies", []),
           os_dependencies: hash.fetch("os_dependencies", {}).transform_values { |deps| OsDependencies.from_h(deps) },
-          defines: hash.fetch("defines", {}), environment: hash.fetch("environment", [])
+          defines: hash.fetch("defines", {}), environment: hash.fetch("environment", []),
+          orogen_arguments: hash.fetch("orogen_arguments", [])
         )
       end
     end

@@ -61,7 +61,7 @@ module Relspec
           check.call(path + [key], false, "text") unless OPTIONAL_TEXT.call(entry[key])
         end
         check.call(path + ["checked_out"], false, "true or false") if entry.key?("checked_out") && !BOOLEAN.call(entry["checked_out"])
-        %w[dependencies optional_dependencies copyright].each { |key| list_of_text(entry, [key], check, prefix: path) }
+        %w[dependencies optional_dependencies copyright orogen_arguments].each { |key| list_of_text(entry, [key], check, prefix: path) }
         check_vcs(entry.fetch("vcs", {}), path + ["vcs"], check)
         check_os_dependencies(entry.fetch("os_dependencies", {}), path + ["os_dependencies"], check)
         check_environment(entry.fetch("environment", []), path + ["environment"], check)

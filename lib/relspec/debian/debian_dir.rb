@@ -71,7 +71,7 @@ module Relspec
       Context = Struct.new(:source, :section, :maintainer, :build_depends, :depends, :homepage, :architecture,
                            :synopsis, :long_description, :codename, :release, :package_name, :vcs_url, :vcs_ref,
                            :commit, :date, :copyright_holders, :license, :license_name, :common_license, :public_source, :build_type, :install_dir, :dh_options,
-                           :canonical, :dependency_dirs, :gem_dir, :cmake_options, :guard, :gem_file, :version,
+                           :canonical, :dependency_dirs, :gem_dir, :cmake_options, :orogen_command, :guard, :gem_file, :version,
                            :body, :ruby_lib_dirs, :package_environment, keyword_init: true)
 
       # Each template becomes a method of Context, compiled once: evaluating
@@ -101,7 +101,7 @@ module Relspec
           public_source: public_url(package.vcs.url.to_s),
           build_type: package.build_type, install_dir: install_dir, dh_options: dh_options(package.build_type),
           canonical: Naming.canonical(package.name), dependency_dirs: dependency_dirs,
-          gem_dir: GEM_DIR, cmake_options: cmake_options,
+          gem_dir: GEM_DIR, cmake_options: cmake_options, orogen_command: orogen_command,
           guard: "RELSPEC_ENV_#{source.gsub(/[^A-Za-z0-9]/, '_')}", gem_file: gem_file, ruby_lib_dirs: ruby_lib_dirs,
           package_environment: package_environment
         }
@@ -135,9 +135,28 @@ module Relspec
                                     .merge("CMAKE_INSTALL_PREFIX" => "$(PREFIX)", "CMAKE_INSTALL_LIBDIR" => "lib")
         defines.map do |name, value|
           option = "-D#{name}=#{value}"
-          option = option.gsub("$", "$$") unless value == "$(PREFIX)"
-          option.match?(%r{\A[-\w=./:,+$()]*\z}) ? option : "'#{option.gsub("'", "'\\\\''")}'"
+          value == "$(PREFIX)" ? option : shell_word(option.gsub("$", "$$"))
         end.join(" ")
+      end
+
+      # The generator's words as autoproj gives them (Catalog::OrogenArguments),
+      # quoted as cmake_options are. A package read without them (a snapshot
+      # of an older relspec) gets autobuild's defaults; one whose .orogen file
+      # was not known when it was read, the one in its source.
+      DEFAULT_OROGEN_ARGUMENTS = %w[--corba --transports=corba,mqueue,typelib --type-export-policy=used].freeze
+
+      def orogen_command
+        words = @in.package.orogen_arguments
+        words = DEFAULT_OROGEN_ARGUMENTS if words.empty?
+        line = ["orogen", *words.map { |word| shell_word(word.gsub("$", "$$")) }]
+        line << "$(wildcard *.orogen)" unless words.last.end_with?(".orogen")
+        line.join(" ")
+      end
+
+      # One word of a shell line in debian/rules ("$" already doubled for
+      # make): a "$" is quoted too, or the shell would expand what make leaves.
+      def shell_word(word)
+        word.match?(%r{\A[-\w=./:,+]*\z}) ? word : "'#{word.gsub("'", "'\\\\''")}'"
       end
 
       def source

@@ -55,6 +55,19 @@ RSpec.describe "the real Rock package sets" do
               { "type" => "add_path", "name" => "QT_PLUGIN_PATH", "values" => ["$PREFIX/lib/qt"] }])
   end
 
+  it "gives oroGen packages the generator words autoproj would, from both package sets" do
+    # orocos.toolchain turns CORBA on (rtt_corba_implementation omniorb);
+    # rock.core, with USE_OCL off: type export 'used' and --no-rtt-scripting,
+    # metadata_support on master, --import=std for all but std itself
+    expect(catalog_of.package("base/orogen/std").orogen_arguments)
+      .to eq(%w[--corba --extensions=metadata_support --no-rtt-scripting --transports=corba,mqueue,typelib
+                --type-export-policy=used std.orogen])
+    expect(catalog_of.package("base/orogen/types").orogen_arguments)
+      .to eq(%w[--corba --extensions=metadata_support --import=std --no-rtt-scripting
+                --transports=corba,mqueue,typelib --type-export-policy=used base.orogen])
+    expect(catalog_of.package("typelib").orogen_arguments).to eq([])
+  end
+
   it "runs them without writing into the workspace (rtt's block deletes a generated file)" do
     Dir.mktmpdir("relspec-real-rock-copy") do |base|
       copy = File.join(base, "workspace")

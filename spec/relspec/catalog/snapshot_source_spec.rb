@@ -66,7 +66,9 @@ RSpec.describe Relspec::Catalog::SnapshotSource do
     "an unknown vcs key" => [/^    vcs:\n/, "    vcs:\n      colour: red\n", "vcs.colour must be one of"],
     "a build type that is a mapping" => [/^    build_type: .*\n/, "    build_type: { a: 1 }\n", "build_type must be text"],
     "an environment setting of an unknown type" => [/(?=^    build_type: )/, "    environment: [{ type: unset, name: X, values: [] }]\n",
-                                                    "environment.0 must be {type: set|add|add_path"]
+                                                    "environment.0 must be {type: set|add|add_path"],
+    "oroGen arguments that are not words" => [/(?=^    build_type: )/, "    orogen_arguments: [--corba, [a]]\n",
+                                              "orogen_arguments.1 must be text"]
   }.each do |what, (pattern, replacement, message)|
     it "refuses #{what} at its line" do
       text = described_class.dump(@catalog)
