@@ -22,7 +22,11 @@ module Relspec
     # under /opt are visible that way, which is where Rock releases install.
     # The packages of local repositories (the release's own and its
     # ancestors', e.g. a parent release published on this machine) are made
-    # visible the same way.
+    # visible the same way. What those packages depend on among them is laid
+    # over too (apt would install it: orogen's env.sh sources typelib's), and
+    # their shlibs go to the build's debian/shlibs.local: dpkg does not know
+    # them as installed, so dpkg-shlibdeps would find a library of theirs
+    # (rtt_typelib links typelib's) and no package for it.
     class HostBackend
       NAME = "host"
       # What dpkg-checkbuilddeps prints before the relations it misses.
@@ -46,9 +50,13 @@ module Relspec
         Dir.mktmpdir("relspec-host-build") do |work|
           tree = File.join(work, "source")
           @tool.run(request.source, ["dpkg-source", "-x", request.dsc, tree], log: request.log)
-          local = check_build_dependencies(request, tree)
+          available = available_debs(request)
+          local = with_dependencies(check_build_dependencies(request, tree, available), available, request.log)
           command = ["dpkg-buildpackage", "-us", "-uc", "-b", "-d"]
-          command = overlay(request, work, local) + command unless local.empty?
+          unless local.empty?
+            add_shlibs(tree, local, request.log)
+            command = overlay(request, work, local) + command
+          end
           @tool.run(request.source, command, log: request.log, chdir: tree)
           ProducedFiles.collect(work, request.output_dir)
         end
@@ -67,8 +75,9 @@ module Relspec
           steps << ShellLine.join(["mkdir", "-p", File.join(root, "opt")])
           # a folder (the results of a package built earlier in the run) gives all its .debs
           patterns = debs.map { |deb| deb.end_with?(".deb") ? ShellLine.quote(deb) : "#{ShellLine.quote(deb)}/*.deb" }
-          steps << "for deb in #{patterns.join(' ')}; do [ ! -f \"$deb\" ] || dpkg-deb -x \"$deb\" " \
-                   "#{ShellLine.quote(root)}; done"
+          steps << "for deb in #{patterns.join(' ')}; do [ ! -f \"$deb\" ] || { dpkg-deb -x \"$deb\" " \
+                   "#{ShellLine.quote(root)} && { dpkg-deb -I \"$deb\" shlibs >> source/debian/shlibs.local " \
+                   "2>/dev/null || true; }; }; done"
           build = overlay_prefix(root) + build
         end
         steps << "cd source && #{ShellLine.join(build)}"
@@ -84,7 +93,7 @@ module Relspec
       # The build-dependencies missing on this machine, less the ones built
       # in this run (returned: their .debs); any other missing one fails the
       # build, named.
-      def check_build_dependencies(request, tree)
+      def check_build_dependencies(request, tree, local)
         output, status = Open3.capture2e("dpkg-checkbuilddeps", chdir: tree)
         File.open(request.log, "a") { |file| file.puts("$ dpkg-checkbuilddeps", output) }
         return [] if status.success?
@@ -92,8 +101,6 @@ module Relspec
         unmet = output[UNMET, 1] or
           raise BuildError, "#{request.source}: dpkg-checkbuilddeps failed (exit status #{status.exitstatus}), " \
                             "see #{request.log}"
-        local = (request.repositories.flat_map { |repository| repository.pool_debs(request.target) } +
-                 request.local_debs).to_h { |deb| [File.basename(deb).split("_").first, deb] }
         relations = unmet.scan(RELATION)
         missing = relations.reject { |relation| relation.split(/\s*\|\s*/).any? { |alt| local[alt[/\A[^\s(:]+/]] } }
         unless missing.empty?
@@ -103,6 +110,45 @@ module Relspec
         end
         relations.flat_map { |relation| relation.split(/\s*\|\s*/) }
                  .filter_map { |alt| local[alt[/\A[^\s(:]+/]] }.uniq
+      end
+
+      # Package name => .deb of what this build may lay over /opt: the local
+      # repositories' packages and the ones built earlier in the run.
+      def available_debs(request)
+        (request.repositories.flat_map { |repository| repository.pool_debs(request.target) } +
+         request.local_debs).to_h { |deb| [File.basename(deb).split("_").first, deb] }
+      end
+
+      # +debs+ and, through their Depends, every package of +available+ they
+      # need, as apt would install them.
+      def with_dependencies(debs, available, log)
+        found = debs.dup
+        found.each do |deb|
+          depends = deb_field(deb, "Depends", log)
+          names = depends.split(/[,|]/).map { |alt| alt.strip[/\A[^\s(:]+/] }
+          found.concat(names.filter_map { |name| available[name] }.reject { |dep| found.include?(dep) }.uniq)
+        end
+        found
+      end
+
+      def deb_field(deb, field, log)
+        output, status = Open3.capture2e("dpkg-deb", "-f", deb, field)
+        raise BuildError, "cannot read #{field} of #{deb}: #{output.strip}, see #{log}" unless status.success?
+
+        output
+      end
+
+      # The shlibs of +debs+ into the build's debian/shlibs.local (after any
+      # the package has); a package without a library has none.
+      def add_shlibs(tree, debs, log)
+        lines = debs.map do |deb|
+          output, status = Open3.capture2e("dpkg-deb", "--info", deb, "shlibs")
+          status.success? ? output : ""
+        end.join
+        return if lines.empty?
+
+        File.open(File.join(tree, "debian", "shlibs.local"), "a") { |file| file.write(lines) }
+        File.open(log, "a") { |file| file.puts("# shlibs of the packages laid over /opt:", lines) }
       end
 
       # The command prefix that runs a build with +debs+ visible under /opt.

@@ -84,3 +84,49 @@ RSpec.describe "relspec build --backend host with several build-dependencies of 
                                            "machine: relspec-test-absent-package (relspec looked")
   end
 end
+
+# What apt would install with a build-dependency of the release, the host
+# backend lays over /opt too: base/top names only base/mid, which depends on
+# base/lib, whose shared library base/top links. dpkg does not know these
+# packages as installed, so their shlibs must reach dpkg-shlibdeps through
+# debian/shlibs.local (rtt_typelib linking typelib failed there).
+RSpec.describe "relspec build --backend host with a library two steps away" do
+  LIBRARY = <<~CMAKE
+    enable_language(C)
+    file(WRITE ${CMAKE_BINARY_DIR}/lib.c "int relspec_answer(void) { return 42; }\\n")
+    add_library(answer SHARED ${CMAKE_BINARY_DIR}/lib.c)
+    set_target_properties(answer PROPERTIES SOVERSION 1)
+    install(TARGETS answer LIBRARY DESTINATION lib)
+  CMAKE
+  PROGRAM = <<~CMAKE
+    enable_language(C)
+    file(WRITE ${CMAKE_BINARY_DIR}/main.c "int relspec_answer(void);\\nint main(void) { return relspec_answer() == 42 ? 0 : 1; }\\n")
+    add_executable(asker ${CMAKE_BINARY_DIR}/main.c)
+    target_link_libraries(asker /opt/rock/ht/rock-ht-base-lib/lib/libanswer.so)
+    set_target_properties(asker PROPERTIES INSTALL_RPATH /opt/rock/ht/rock-ht-base-lib/lib)
+    install(TARGETS asker RUNTIME DESTINATION bin)
+  CMAKE
+
+  before(:all) do
+    @dir = Dir.mktmpdir("relspec-build-host-transitive")
+    @release = BuildRelease.new(@dir, "ht")
+    @release.package("base/lib", cmake: LIBRARY)
+    @release.package("base/mid", dependencies: %w[base/lib])
+    @release.package("base/top", dependencies: %w[base/mid], cmake: PROGRAM)
+    @release.compile
+    @run = relspec("build", "specs/ht.yml", "--out", "out", "--backend", "host", chdir: @dir)
+  end
+
+  after(:all) { FileUtils.rm_rf(@dir) }
+
+  it "links a library of a package its build-dependency depends on, and depends on that package" do
+    top = @release.source("base/top")
+    log = File.read(File.join(@release.target_dir, "logs", "#{top}.log"))
+    expect(@run.exit_code).to eq(0), "#{@run.stderr}\n#{log.lines.last(30).join}"
+    control = Open3.capture2("dpkg-deb", "-f", *Dir[File.join(@release.target_dir, "results", top, "#{top}_*.deb")],
+                             "Depends").first
+    # the library's package comes from its shlibs, as it would with apt
+    expect(control).to match(/\brock-ht-base-lib \(>= [^)]+\)/)
+    expect(log).to include("# shlibs of the packages laid over /opt:\nlibanswer 1 rock-ht-base-lib")
+  end
+end
