@@ -122,9 +122,11 @@ class WorkspaceBuilder
 
   private
 
+  # A script (#! line) is committed executable, as in real repositories.
   def write(path, content)
     FileUtils.mkdir_p(File.dirname(path))
     File.write(path, content)
+    File.chmod(0o755, path) if content.start_with?("#!")
   end
 
   def write_config

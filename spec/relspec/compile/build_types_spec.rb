@@ -18,6 +18,17 @@ RSpec.describe "compiling Ruby gemspec and oroGen packages" do
       s.executables = ["rubylib"]
     end
   RUBY
+  # as orogen's: bin/ holds scripts, the gemspec declares no executables
+  TOOL_GEMSPEC = <<~RUBY
+    Gem::Specification.new do |s|
+      s.name = "gentool"
+      s.version = "1.3.0"
+      s.summary = "A generator run from its bin/"
+      s.authors = ["Rock Packaging"]
+      s.files = `git ls-files -z`.split("\\x0")
+      s.require_paths = ["lib"]
+    end
+  RUBY
 
   # A stand-in for oroGen's generator: oroGen itself (and the Orocos
   # toolchain it needs) cannot be installed on this machine, so this script
@@ -39,9 +50,13 @@ RSpec.describe "compiling Ruby gemspec and oroGen packages" do
     builder.package("tools/rubylib", type: :ruby, date: "2020-03-01T00:00:00Z", version: "0.4",
                                      files: { "rubylib.gemspec" => GEMSPEC, "lib/rubylib.rb" => "module Rubylib\nend\n",
                                               "bin/rubylib" => "#!/usr/bin/env ruby\nputs 'rubylib'\n" })
+    builder.package("tools/gentool", type: :ruby, date: "2020-03-01T00:00:00Z", version: "1.3",
+                                     files: { "gentool.gemspec" => TOOL_GEMSPEC,
+                                              "lib/gentool.rb" => "module Gentool\n  ANSWER = 42\nend\n",
+                                              "bin/gentool" => "#!/usr/bin/env ruby\nrequire 'gentool'\nputs Gentool::ANSWER\n" })
     builder.package("drivers/orogen/camera", type: :orogen, date: "2020-03-02T00:00:00Z",
                                              files: { "camera.orogen" => "name \"camera\"\n" })
-    builder.layout("tools/rubylib", "drivers/orogen/camera")
+    builder.layout("tools/rubylib", "tools/gentool", "drivers/orogen/camera")
     builder.create
     FileUtils.mkdir_p(File.join(@dir, "specs"))
     File.write(File.join(@dir, "specs", "types.yml"), "release: types\nworkspace: ../ws/workspace\n" \
@@ -85,6 +100,21 @@ RSpec.describe "compiling Ruby gemspec and oroGen packages" do
       output, status = Open3.capture2e("debian/rules", "clean", chdir: tree)
       expect(status).to be_success, output
       expect(Dir.children(tree).sort - [".pc"]).to eq(%w[bin debian lib manifest.xml rubylib.gemspec]) # .pc: dpkg-source's
+    end
+  end
+
+  it "puts the bin/ of a gem that declares no executables on PATH, as autoproj does" do
+    Dir.mktmpdir("relspec-ruby-bin") do |work|
+      deb = build("rock-types-ruby-tools-gentool", work)
+      root = File.join(work, "root")
+      system("dpkg-deb", "-x", deb, root, exception: true)
+      prefix = File.join(root, "opt/rock/types/rock-types-ruby-tools-gentool")
+      expect(File.readlink(File.join(prefix, "bin"))).to eq("gems/gems/gentool-1.3.0/bin")
+      # the installed env.sh's PATH and RUBYLIB, moved under the unpacked root
+      env = File.read(File.join(prefix, "env.sh")).gsub("/opt/rock/types", File.join(root, "opt/rock/types"))
+      File.write(File.join(work, "env.sh"), env)
+      output, status = Open3.capture2e("sh", "-c", ". ./env.sh && gentool", chdir: work)
+      expect([output, status.success?]).to eq(["42\n", true])
     end
   end
 
