@@ -86,6 +86,14 @@ class RealRockWorkspace
     write("autoproj/workspace.osdeps", "{}\n")
     write("autoproj/workspace.osdeps-ruby31", "ruby-dev:\n  default: ignore\n")
     write("autoproj/overrides.yml", overrides)
+    # ../shared has no SISL (external/sisl is left out where these are
+    # built); base/types' CMake stops unless told to do without, so the
+    # maintainer says so in the workspace, as autoproj users do
+    write("autoproj/overrides.rb", <<~RUBY)
+      setup_package "base/types" do |pkg|
+        pkg.define "USE_SISL", "OFF"
+      end
+    RUBY
     PACKAGE_SETS.each { |github, bundle| git("clone", "-q", self.class.bundle_path(bundle), remote_dir(github)) }
     PACKAGES.each do |name, (bundle, dir)|
       git("clone", "-q", "--mirror", self.class.bundle_path(bundle), repository(name))
