@@ -62,9 +62,11 @@ class ToolchainRelease
 
       raise "#{name}-#{version}.gem is neither in #{RockGems::CACHE} nor fetchable from #{Gem.sources.first}"
     end
-    # the project's overlays (upstream bugs patched for this release), as they are
+    # the project's overlays (upstream bugs patched for this release), as
+    # they are, and the one building base/types without SISL needs
     FileUtils.rm_rf(File.join(dir, "overlays"))
     FileUtils.cp_r(File.join(ROOT, "overlays"), dir)
+    FileUtils.cp_r(File.join(ROOT, "spec", "fixtures", "toolchain_overlays", "."), File.join(dir, "overlays"))
     FileUtils.mkdir_p(File.dirname(spec_path))
     File.write(spec_path, spec_text)
   end

@@ -11,6 +11,8 @@ require_relative "../../support/real_rock_workspace"
 # and uses all of them.
 RSpec.describe "the project's overlays on the real Rock sources" do
   PATCHES = Dir[File.join(CliRunner::ROOT, "overlays", "**", "patches", "*.patch")].sort
+  # the toolchain tests' own (base/types without SISL, docs/compile.md)
+  TEST_PATCHES = Dir[File.join(CliRunner::ROOT, "spec", "fixtures", "toolchain_overlays", "**", "patches", "*.patch")].sort
 
   before(:all) do
     need_fixture(RealRockWorkspace.available?, RealRockWorkspace.skip_reason)
@@ -18,7 +20,7 @@ RSpec.describe "the project's overlays on the real Rock sources" do
   end
 
   def package_of(patch)
-    File.dirname(patch, 2).delete_prefix("#{File.join(CliRunner::ROOT, 'overlays')}/")
+    File.dirname(patch, 2).split(%r{/(?:toolchain_)?overlays/}).last
   end
 
   def source_dir(package)
@@ -30,7 +32,7 @@ RSpec.describe "the project's overlays on the real Rock sources" do
     expect(PATCHES.map { |patch| patch.delete_prefix("#{CliRunner::ROOT}/") }).to match_array(listed)
   end
 
-  PATCHES.each do |patch|
+  (PATCHES + TEST_PATCHES).each do |patch|
     it "applies #{File.basename(patch)} to the real #{File.dirname(patch, 2).split('/overlays/').last}" do
       output, status = Open3.capture2e("git", "apply", "--check", "-p1", patch, chdir: source_dir(package_of(patch)))
       expect(status).to be_success, output
