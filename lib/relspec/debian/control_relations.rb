@@ -12,7 +12,10 @@ module Relspec
     # asks for the same lists without the Rock packages, so that what is
     # checked is exactly what the builder will ask apt for.
     module ControlRelations
-      BUILD_TOOLS = { "cmake" => ["cmake"], "orogen" => ["cmake"], "autotools" => %w[autoconf automake libtool],
+      # oroGen's generator asks pkg-config for every library and typekit it
+      # uses (using_library, import_types_from), and so does its CMake: no
+      # package it depends on brings pkg-config to a clean chroot (BUILD_ONLY).
+      BUILD_TOOLS = { "cmake" => ["cmake"], "orogen" => %w[cmake pkg-config], "autotools" => %w[autoconf automake libtool],
                       "ruby" => %w[ruby git], "gem" => ["ruby"], "import" => [], "archive" => [], "meta" => [] }.freeze
 
       # build-essential is implied for every build (and Policy forbids listing it).

@@ -119,6 +119,9 @@ RSpec.describe "compiling Ruby gemspec and oroGen packages" do
   end
 
   it "runs the oroGen generator before configuring with CMake" do
+    dsc = File.read(Dir[File.join(@dir, "out", "types", "bookworm-amd64", "rock-types-drivers-orogen-camera", "*.dsc")].first)
+    # a clean chroot has no pkg-config, which the generator and its CMake ask
+    expect(dsc[/^Build-Depends: (.*)$/, 1].split(", ")).to include("cmake", "pkg-config")
     Dir.mktmpdir("relspec-orogen") do |work|
       deb = build("rock-types-drivers-orogen-camera", work)
       share = "./opt/rock/types/rock-types-drivers-orogen-camera/share/orogen"
