@@ -19,8 +19,9 @@ require_relative "../support/installed_system"
 # RTT's CORBA transport; typelib from Ruby imports a header with base types
 # and loads the installed typekit registries.
 #
-# About 25 minutes of builds on 2 cores: run by bin/toolchain-acceptance,
-# not by bin/test (docs/performance.md).
+# bin/test runs it in its chroot process with the host backend (about 22 min
+# there, beside the rest of the suite); bin/toolchain-acceptance runs it with
+# sbuild (docs/performance.md).
 RSpec.describe "a user's oroGen component on the packaged Rock toolchain" do
   FIXTURE = File.expand_path("../fixtures/orogen_component", __dir__)
 
