@@ -46,6 +46,21 @@ module Relspec
           run("scancel", *ids.map(&:to_s)) unless ids.empty?
         end
 
+        # scancel only asks: a running job passes through COMPLETING while
+        # its node kills the script (about a second). Cancels +ids+ and
+        # waits up to +seconds+ for them to leave the queue's live states;
+        # returns the ids still live then.
+        def cancel_and_wait(ids, seconds:, poll: 0.2)
+          cancel(ids)
+          deadline = Process.clock_gettime(Process::CLOCK_MONOTONIC) + seconds
+          loop do
+            live = live_among(ids)
+            return live if live.empty? || Process.clock_gettime(Process::CLOCK_MONOTONIC) >= deadline
+
+            sleep poll
+          end
+        end
+
         # Every job squeue knows (also finished ones, until MinJobAge).
         def queue
           jobs(run("squeue", "--json"))
@@ -61,6 +76,13 @@ module Relspec
         end
 
         private
+
+        def live_among(ids)
+          states = queue.to_h { |job| [job.id, job] }
+          ids.select { |id| states[id]&.live? }
+        rescue BuildError
+          [] # squeue itself failed: nothing more can be known, and the cancel was sent
+        end
 
         def jobs(output)
           data = JSON.parse(output)

@@ -34,7 +34,6 @@ module Relspec
         COMPLETED = "COMPLETED"
         # How long an interrupted run waits for its cancelled jobs to end.
         CANCEL_WAIT = 15
-        CANCEL_POLL = 0.2
 
         def initialize(cluster:, settings:, backend:, notices: nil)
           @cluster = cluster
@@ -300,37 +299,20 @@ module Relspec
           nil # a job that ended meanwhile cannot be cancelled: nothing to do
         end
 
-        # scancel only asks: a running job goes through COMPLETING while its
-        # node kills the script, about a second. relspec waits for that,
-        # bounded, so that "cancelled" is true when it is said; a job still
-        # ending at the deadline is named as such instead.
+        # "cancelled" is said when it is true: Cluster#cancel_and_wait
+        # waits, bounded, for the jobs to end, and those still ending are named.
         def cancel_all
           ids = (Array(@submitted) + @tracked.keys + [@prepare_id].compact).uniq.sort
           return if ids.empty?
 
-          cancel(ids)
-          ending = wait_ended(ids)
+          ending = begin
+            @cluster.cancel_and_wait(ids, seconds: CANCEL_WAIT)
+          rescue BuildError
+            [] # a job that ended meanwhile cannot be cancelled: nothing to do
+          end
           message = "relspec: cancelled the Slurm jobs of run #{@run_id}: #{ids.join(', ')}"
           message += " (still ending: #{ending.join(', ')}; squeue shows when they have)" unless ending.empty?
           @notices&.puts(message)
-        end
-
-        # The ids of +ids+ still live after CANCEL_WAIT seconds.
-        def wait_ended(ids)
-          deadline = Process.clock_gettime(Process::CLOCK_MONOTONIC) + CANCEL_WAIT
-          loop do
-            live = live_among(ids)
-            return live if live.empty? || Process.clock_gettime(Process::CLOCK_MONOTONIC) >= deadline
-
-            sleep CANCEL_POLL
-          end
-        end
-
-        def live_among(ids)
-          queue = @cluster.queue.to_h { |job| [job.id, job] }
-          ids.select { |id| queue[id]&.live? }
-        rescue BuildError
-          [] # squeue itself failed: nothing more can be known, and the cancel was sent
         end
 
         def result_path(source) = File.join(@jobs_dir, "#{source}.result")
