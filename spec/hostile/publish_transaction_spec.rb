@@ -194,4 +194,36 @@ RSpec.describe "relspec publish as a transaction", order: :defined do
       system("umount", bound)
     end
   end
+
+  # Issue 34, case 5: the same built release, built again with a log file
+  # or the results folder made a link to outside the project.
+  it "case 5: refuses to build through a link out of the target folder, naming it, and touches nothing outside" do
+    outside = File.join(Dir.mktmpdir("relspec-outside"), "keep")
+    FileUtils.mkdir_p(outside)
+    File.write(File.join(outside, "precious.txt"), "mine\n")
+    log = File.join(@release.target_dir, "logs", "#{@release.source('base/a1')}.log")
+    results = File.join(@release.target_dir, "results")
+    pristine = File.read(log)
+    {
+      log => File.join(outside, "precious.txt"),
+      results => outside
+    }.each do |link, to|
+      File.rename(link, "#{link}.real")
+      File.symlink(to, link)
+      begin
+        run = relspec("build", "specs/tx.yml", "--out", "out", "--backend", "host", "--rebuild", chdir: @dir)
+        expect([run.exit_code, run.stdout]).to eq([1, ""])
+        expect(run.stderr).to eq("relspec: error: #{link} is a symbolic link (to #{to}): a build writes only inside " \
+                                 "#{@release.target_dir} and never through a link; remove the link and build again\n")
+        expect(Dir.children(outside)).to eq(["precious.txt"])
+        expect(File.read(File.join(outside, "precious.txt"))).to eq("mine\n")
+      ensure
+        File.delete(link)
+        File.rename("#{link}.real", link)
+      end
+    end
+    expect(File.read(log)).to eq(pristine)
+  ensure
+    FileUtils.rm_rf(File.dirname(outside))
+  end
 end
