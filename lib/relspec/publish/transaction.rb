@@ -82,7 +82,7 @@ module Relspec
         FOLDERS.each { |name| copy(File.join(@repository, name), File.join(@work, name)) }
         result = yield(FOLDERS.to_h { |name| [name.to_sym, File.join(@work, name)] })
         File.write(File.join(@work, READY), "#{base} #{digest(FOLDERS.map { |name| File.join(@work, name) })}\n")
-        switch
+        switch_or_explain
         result
       rescue StandardError, Interrupt
         FileUtils.rm_rf(@work) unless File.exist?(File.join(@work, READY))
@@ -90,6 +90,14 @@ module Relspec
       end
 
       private
+
+      def switch_or_explain
+        switch
+      rescue SystemCallError => e
+        raise PublishError, "cannot switch #{@repository} to the published state in #{@work}: " \
+                            "#{e.message.sub(/ @ .*/, '')}; fix that and publish again (it finishes the switch, " \
+                            "or puts back what it had replaced)"
+      end
 
       def refuse_old_marker
         marker = File.join(@repository, OLD_MARKER)

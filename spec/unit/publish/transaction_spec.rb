@@ -103,6 +103,18 @@ RSpec.describe Relspec::Publish::Transaction do
     expect(File.exist?(work)).to be(false)
   end
 
+  it "says what to do when the switch itself fails, and keeps the ready copy for the next publish" do
+    allow(File).to receive(:rename).and_call_original
+    allow(File).to receive(:rename).with(File.join(work, "dists"), anything).and_raise(Errno::EIO)
+    expect { publish }.to raise_error(Relspec::PublishError, "cannot switch #{@repository} to the published state in " \
+                                                             "#{work}: Input/output error; fix that and publish again " \
+                                                             "(it finishes the switch, or puts back what it had replaced)")
+    expect(File.exist?(File.join(work, "READY"))).to be(true)
+    allow(File).to receive(:rename).and_call_original
+    expect(transaction.recover).to eq(:finished)
+    expect(live).to include("db/packages.db" => "new db\n", "dists/bookworm/Release" => "new release\n")
+  end
+
   it "refuses the marker of an earlier relspec's publish, changing nothing and saying what to do" do
     File.write(File.join(@repository, described_class::OLD_MARKER), "")
     before = live
