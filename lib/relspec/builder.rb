@@ -12,6 +12,7 @@ require_relative "builder/target_lock"
 require_relative "builder/repositories"
 require_relative "builder/scheduler"
 require_relative "builder/tool"
+require_relative "builder/unlinked_path"
 require_relative "builder/host_backend"
 require_relative "builder/sbuild_backend"
 require_relative "builder/slurm/cluster"
@@ -78,10 +79,11 @@ module Relspec
           dir = File.expand_path(tree.target_dir(target))
           plan = BuildPlan.read(dir)
           TargetLock.hold(dir, "build") do
-            logs = File.expand_path(tree.logs_dir(target))
-            FileUtils.mkdir_p(logs)
+            refuse_links(dir, plan)
+            FileUtils.mkdir_p(File.join(dir, "logs"))
+            prepare_log = UnlinkedPath.check(dir, "logs/prepare.log")
             # on a cluster the chroot-prepare job of the target makes it, on a node
-            prepared = slurm? && !@prepare_only ? false : backend.prepare(target, log: File.join(logs, "prepare.log"))
+            prepared = slurm? && !@prepare_only ? false : backend.prepare(target, log: prepare_log)
             next TargetReport.new(target: target, dir: dir, outcomes: [], reused: 0, prepared: prepared) if @prepare_only
 
             build_target(target, dir, plan, backend, Repositories.of(resolution, target.codename), prepared)
@@ -99,6 +101,16 @@ module Relspec
         when "host" then HostBackend.new(@tool)
         when "sbuild" then SbuildBackend.new(@tool, @effective.distributions, chroot_cache: shared_chroots)
         else raise BuildError, "unknown backend #{@backend_name.inspect} (known: #{BACKENDS.join(', ')})"
+        end
+      end
+
+      # Every path the run writes below +dir+, checked before the first
+      # build starts (UnlinkedPath).
+      def refuse_links(dir, plan)
+        %w[results logs logs/prepare.log].each { |relative| UnlinkedPath.check(dir, relative) }
+        plan.entries.each do |entry|
+          UnlinkedPath.check(dir, "results/#{entry.source}")
+          UnlinkedPath.check(dir, "logs/#{entry.source}.log")
         end
       end
 
@@ -150,8 +162,8 @@ module Relspec
       end
 
       def request_for(plan, entry, target, repositories, debs, dir)
-        output_dir = File.join(dir, "results", entry.source)
-        log = File.join(dir, "logs", "#{entry.source}.log")
+        output_dir = UnlinkedPath.check(dir, "results/#{entry.source}")
+        log = UnlinkedPath.check(dir, "logs/#{entry.source}.log")
         FileUtils.rm_rf(output_dir)
         File.write(log, "")
         Request.new(source: entry.source, version: entry.version, dsc: File.expand_path(plan.dsc_path(entry)),

@@ -13,7 +13,8 @@ require_relative "builder/target_lock"
 require_relative "publish/repository_config"
 require_relative "publish/repository_lock"
 require_relative "publish/stale_reprepro_lock"
-require_relative "publish/database_snapshot"
+require_relative "publish/transaction"
+require_relative "publish/live_lock"
 require_relative "publish/upload"
 require_relative "publish/pool_guard"
 require_relative "publish/reprepro"
@@ -33,9 +34,9 @@ module Relspec
     # false when the target has no build-results.yml.
     TargetResult = Struct.new(:target, :results_path, :published, :held, :left_out, :built, keyword_init: true)
     # +stale_lock+: reprepro's lock file a killed reprepro had left, removed
-    # before publishing (nil: there was none); +rolled_back+: the database
-    # of an interrupted publish was put back first (DatabaseSnapshot).
-    Result = Struct.new(:release, :repository, :targets, :osdeps_written, :osdeps_missing, :stale_lock, :rolled_back,
+    # before publishing (nil: there was none); +recovered+: what became of
+    # an interrupted publish's work (Transaction#recover; nil: none).
+    Result = Struct.new(:release, :repository, :targets, :osdeps_written, :osdeps_missing, :stale_lock, :recovered,
                         keyword_init: true)
 
     # +target+: "codename/arch" or nil (all targets); +waiting+: called
@@ -81,16 +82,32 @@ module Relspec
       SigningKey.check(sign_with) if sign_with
       config = RepositoryConfig.new(release: effective.release, targets: all, sign_with: sign_with)
       RepositoryLock.hold(repository, waiting: waiting) do
-        stale_lock = StaleRepreproLock.clear(repository)
-        rolled_back = false
-        targets = DatabaseSnapshot.guard(repository) do |restored|
-          rolled_back = restored
-          include_targets(repository, config, results, uploads, export: restored)
+        stale_lock, recovered, targets = transaction(repository, waiting: waiting) do |dirs, recovered_now|
+          include_targets(repository, dirs, config, results, uploads, export: recovered_now == :abandoned)
         end
         written, missing = write_osdeps(locked, effective, repository)
         Result.new(release: effective.release, repository: repository, targets: targets, osdeps_written: written,
-                   osdeps_missing: missing, stale_lock: stale_lock, rolled_back: rolled_back)
+                   osdeps_missing: missing, stale_lock: stale_lock, recovered: recovered)
       end
+    end
+
+    # Under reprepro's lock on the live database: recovers what an
+    # interrupted publish left, yields the folders of a new Transaction and
+    # switches to them; then deletes the pool files nothing lists any more.
+    # [stale lock removed, recovery, the block's result]
+    def self.transaction(repository, waiting:)
+      transaction = Transaction.new(repository)
+      lock = LiveLock.new(repository, waiting: waiting)
+      transaction.undo_half_rename
+      stale = lock.take
+      begin
+        recovered = transaction.recover
+        result = transaction.run { |dirs| yield dirs, recovered }
+      ensure
+        lock.release
+      end
+      Reprepro.new(repository).deleteunreferenced
+      [stale, recovered, result]
     end
 
     def self.repository_path(resolution)
@@ -114,14 +131,15 @@ module Relspec
       nil
     end
 
-    # +export+: write dists/ again even if the configuration is unchanged
-    # (they may be newer than a database put back).
-    def self.include_targets(repository, config, results, uploads, export:)
-      reprepro = Reprepro.new(repository)
-      changed = write_config(repository, config)
+    # +dirs+: the Transaction's conf, db and dists folders; +export+: write
+    # dists/ again even if the configuration is unchanged (a database put
+    # back may have been changed by hand since).
+    def self.include_targets(repository, dirs, config, results, uploads, export:)
+      reprepro = Reprepro.new(repository, dirs)
+      changed = write_config(dirs.fetch(:conf), config)
       PoolGuard.check(repository, uploads.values.flatten.flat_map(&:items))
       targets = results.map do |target, read|
-        listed = File.directory?(File.join(repository, "db")) ? reprepro.sources(target.codename) : []
+        listed = Dir.empty?(dirs.fetch(:db)) ? [] : reprepro.sources(target.codename)
         held, fresh = uploads[target].partition { |upload| listed.include?("#{upload.source} #{upload.version}") }
         fresh.each { |upload| reprepro.includedsc(target.codename, upload.dsc) }
         # Every .deb of the target in one call, held ones too: reprepro skips
@@ -138,8 +156,7 @@ module Relspec
       targets
     end
 
-    def self.write_config(repository, config)
-      dir = File.join(repository, "conf")
+    def self.write_config(dir, config)
       FileUtils.mkdir_p(dir)
       config.files.map { |name, text| AtomicFile.update(File.join(dir, name), text) }.any?
     end
@@ -155,6 +172,6 @@ module Relspec
       written = Osdeps::Files.write_release(listing.targets, effective, File.join(repository, "osdeps"))
       [written.changed_count, listing.missing]
     end
-    private_class_method :repository_path, :read_results, :include_targets, :write_config, :write_osdeps
+    private_class_method :transaction, :repository_path, :read_results, :include_targets, :write_config, :write_osdeps
   end
 end

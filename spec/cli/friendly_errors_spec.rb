@@ -28,6 +28,31 @@ RSpec.describe Relspec::CLI::FriendlyErrors do
     expect([status, stderr.string]).to eq([130, "relspec: interrupted\n"])
   end
 
+  # Issue 34, case 15: Open3's reader threads, their stream closed under
+  # them when the interrupted run ends, printed their own exception report
+  # to $stderr before "interrupted".
+  it "lets no thread started in the run print its own exception report when the run is interrupted" do
+    reader, writer = IO.pipe
+    thread = nil
+    report = StringIO.new
+    saved = $stderr
+    begin
+      $stderr = report
+      status = wrap do
+        thread = Thread.new { reader.read }
+        sleep(0.05) until thread.status == "sleep"
+        Process.kill("INT", Process.pid)
+        sleep(5)
+      end
+      reader.close # as Open3's popen_run does when its caller unwinds
+      expect { thread.join }.to raise_error(IOError)
+      expect([status, stderr.string, report.string]).to eq([130, "relspec: interrupted\n", ""])
+    ensure
+      $stderr = saved
+      writer.close
+    end
+  end
+
   it "reports the same error without a SIGINT as a bug (70), and leaves SIGINT's handler as it was" do
     before = trap("INT", "DEFAULT")
     trap("INT", before)

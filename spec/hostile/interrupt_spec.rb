@@ -49,6 +49,32 @@ RSpec.describe "relspec under interrupts" do
     end
   end
 
+  # Issue 34, case 15: SIGINT while relspec's main thread waits in Open3
+  # for a tool (git, made slow by a wrapper first in PATH so that it surely
+  # does): Open3's reader threads, their pipes closed as the run unwound,
+  # printed `#<Thread:… open3.rb:296 run> terminated with exception` before
+  # the one line (3 of 3 runs before the fix).
+  it "prints no thread's exception report when interrupted while a tool runs" do
+    project = File.join(@dir, "git-project")
+    FileUtils.mkdir_p([File.join(project, "specs"), File.join(project, "bin")])
+    File.write(File.join(project, "specs", "g.yml"), "release: g\ntargets: { bookworm: [amd64] }\n")
+    system("git", "-C", project, "init", "-q", exception: true)
+    system("git", "-C", project, "add", "specs", exception: true)
+    system("git", "-C", project, "-c", "user.email=t@example.org", "-c", "user.name=t", "commit", "-qm", "spec",
+           exception: true)
+    started = File.join(project, "git-started")
+    File.write(File.join(project, "bin", "git"), "#!/bin/sh\ntouch #{started}\nsleep 2\nexec /usr/bin/git \"$@\"\n")
+    File.chmod(0o755, File.join(project, "bin", "git"))
+    pid = spawn_relspec("diff", "--base", "HEAD", "specs/g.yml", chdir: project,
+                                                                 env: { "PATH" => "#{project}/bin:#{ENV.fetch('PATH')}" })
+    deadline = Process.clock_gettime(Process::CLOCK_MONOTONIC) + 60
+    sleep(0.02) until File.exist?(started) || Process.clock_gettime(Process::CLOCK_MONOTONIC) > deadline
+    sleep(0.2) # into Open3's wait
+    signal_relspec(pid, "INT")
+    run = finish_relspec(pid)
+    expect([run.status.exitstatus, run.stderr]).to eq([130, "relspec: interrupted\n"])
+  end
+
   # Issue 24, item 4: the orig cache (<out>/<release>/.orig/) holds each
   # tarball with its SHA256; a compile killed while writing one leaves a
   # temporary, never a half-written entry, and the next compile ends with

@@ -13,9 +13,19 @@ module Relspec
       EXIT_BUG = 70
       EXIT_INTERRUPTED = 130
 
+      # Threads never print their own exception reports: relspec's threads
+      # hand their errors to the thread that joins them (WorkerPool, Open3's
+      # readers), which raises them here. A report would bypass this place:
+      # on SIGINT the threads ended at exit (Open3's readers, their stream
+      # closed under them) printed `#<Thread:…> terminated with exception`
+      # before "interrupted".
       def self.wrap(stderr:, debug:, &block)
         watch = InterruptWatch.new
+        reporting = Thread.report_on_exception
+        Thread.report_on_exception = debug
         outcome(stderr, debug, watch) { watch.watch(&block) }
+      ensure
+        Thread.report_on_exception = reporting
       end
 
       def self.outcome(stderr, debug, watch)

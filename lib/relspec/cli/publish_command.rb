@@ -18,15 +18,12 @@ module Relspec
 
       def call
         result = Publish.run(@path, out: @out, target: @target, timeout: @timeout,
-                                    waiting: -> { @err.puts("waiting for another relspec publish to finish…") })
+                                    waiting: ->(what) { @err.puts("waiting for #{what} to finish…") })
         if result.stale_lock
           @err.puts("removed reprepro's stale lock #{result.stale_lock} (no reprepro uses the repository: " \
                     "one was killed before it could remove it)")
         end
-        if result.rolled_back
-          @err.puts("the last publish into #{result.repository} was interrupted: its database was put back " \
-                    "as the publish before it left it, and everything was included again")
-        end
+        note_recovered(result)
         result.targets.each { |target| report(target) }
         @io.puts("#{result.release}: #{result.repository}: #{result.osdeps_written.zero? ? 'osdeps unchanged' : "wrote #{result.osdeps_written} osdeps files"}")
         note_missing(result.osdeps_missing)
@@ -34,6 +31,20 @@ module Relspec
       end
 
       private
+
+      RECOVERED = {
+        discarded: "had not started to change it: its unfinished copy was removed, the repository is as the last " \
+                   "finished publish left it",
+        finished: "had completed its new state: it was switched in now",
+        abandoned: "left a new state that no longer matches the repository (changed since, or damaged): it was " \
+                   "not used, the repository is as it was before that publish"
+      }.freeze
+
+      def note_recovered(result)
+        return unless result.recovered
+
+        @err.puts("the last publish into #{result.repository} was interrupted and #{RECOVERED.fetch(result.recovered)}")
+      end
 
       # Planned packages the osdeps files leave out, counted per target (the
       # list is `relspec osdeps --from-repository`'s).

@@ -16,13 +16,13 @@ module Relspec
 
       module_function
 
-      # Yields once the lock is held; +waiting+ is called once if another
-      # publisher holds it.
+      # Yields once the lock is held; +waiting+ is called once (with what
+      # holds it) if another publisher holds it.
       def hold(repository, waiting: nil)
         file = open_lock_file(repository)
         begin
           unless file.flock(File::LOCK_EX | File::LOCK_NB)
-            waiting&.call
+            waiting&.call("another relspec publish")
             file.flock(File::LOCK_EX)
           end
           yield

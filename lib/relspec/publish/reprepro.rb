@@ -5,13 +5,22 @@ require_relative "../error"
 
 module Relspec
   module Publish
-    # reprepro on one base directory. A failure is one PublishError naming
-    # the command, its exit status and its output.
+    # reprepro on one base directory (its pool), optionally with its
+    # configuration, database and dists/ elsewhere (+dirs+: conf:, db:,
+    # dists:, a Transaction's copy; pool files that become unreferenced
+    # there are kept, since the live database may still list them). A
+    # failure is one PublishError naming the command, its exit status and
+    # its output.
     class Reprepro
       OUTPUT_LINES = 30 # lines of a failed command's output kept in the message
 
-      def initialize(base)
+      def initialize(base, dirs = nil)
         @base = base
+        @options = []
+        return unless dirs
+
+        @options = ["--confdir", dirs.fetch(:conf), "--dbdir", dirs.fetch(:db), "--distdir", dirs.fetch(:dists),
+                    "--keepunreferencedfiles"]
       end
 
       def includedsc(codename, dsc)
@@ -31,8 +40,12 @@ module Relspec
         run("export")
       end
 
+      def deleteunreferenced
+        run("deleteunreferenced")
+      end
+
       def run(*args)
-        output, status = Open3.capture2e("reprepro", "--basedir", @base, *args)
+        output, status = Open3.capture2e("reprepro", "--basedir", @base, *@options, *args)
         return output if status.success?
 
         raise PublishError, "reprepro #{args.first} failed (exit status #{status.exitstatus}) in #{@base}:\n" \

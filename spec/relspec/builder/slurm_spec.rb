@@ -3,6 +3,8 @@
 require "spec_helper"
 require "json"
 require "yaml"
+require "pathname"
+require "digest"
 require_relative "../../support/build_release"
 require_relative "../../support/slurm_cluster"
 
@@ -98,8 +100,43 @@ RSpec.describe "relspec build --engine slurm", order: :defined do
     expect(jobs.fetch(@release.source("base/user"))["job_state"]).to eq("CANCELLED")
   end
 
+  # Issue 34, case 10: the result files of the first example's run, forged
+  # as a hostile or broken node could write them, and the results of those
+  # packages forgotten: the next run does not record them as built (no
+  # file; another package's .deb; a file outside the results folder) but
+  # builds them again.
+  it "records a job's result only when its files are that package's, in its results folder, as written" do
+    dir = @release.target_dir
+    file = lambda do |path, name|
+      "file #{Digest::SHA256.file(path).hexdigest} #{File.size(path)} #{name}\n"
+    end
+    a, b, e, c = %w[base/a base/b base/e base/c].map { |name| @release.source(name) }
+    c_deb = Dir.glob("results/#{c}/*.deb", base: dir).first
+    outside = Pathname("/etc/hostname").relative_path_from(Pathname(File.join(dir, "results", e))).to_s
+    header = "relspec_job_result 1\nstatus built\nexit 0\nduration 1.0\n"
+    forged = { a => header, b => header + file.call(File.join(dir, c_deb), c_deb),
+               e => header + file.call("/etc/hostname", "results/#{e}/#{outside}") }
+    forged.each { |source, text| File.write(Dir.glob(File.join(dir, "slurm", "*", "#{source}.result")).first, text) }
+    records = YAML.safe_load(File.read(File.join(dir, "build-results.yml")))
+    forged.each_key { |source| records["packages"].delete(source) }
+    File.write(File.join(dir, "build-results.yml"), YAML.dump(records))
+
+    run = build("--keep-going")
+    expect(run.exit_code).to eq(1), run.stdout + run.stderr # base/broken still fails
+    packages = results.fetch("packages")
+    forged.each_key do |source|
+      expect(packages[source]["status"]).to eq("built")
+      names = packages[source]["files"].map { |entry| entry["name"] }
+      expect(names).to all(start_with("results/#{source}/#{source}_"))
+      expect(names.grep(/\.deb\z/).size).to eq(1)
+      expect(jobs_named(%r{\Asl/bookworm-amd64/#{source}@}).size).to eq(2) # built again
+    end
+  end
+
   it "adopts the jobs of a killed run instead of submitting them again, and loses none" do
-    release = BuildRelease.new(File.join(@dir, "kill"), "slk")
+    # issue 34, case 9: a project folder whose name sbatch would read as a
+    # pattern (%j: the job id) in --output
+    release = BuildRelease.new(File.join(@dir, "kill-100%j"), "slk")
     release.package("base/first", cmake: "execute_process(COMMAND sleep 4)")
     release.package("base/second", dependencies: ["base/first"])
     release.package("base/third", dependencies: ["base/second"])

@@ -9,6 +9,7 @@ require_relative "../request"
 require_relative "../scheduler"
 require_relative "job_result"
 require_relative "job_script"
+require_relative "file_pattern"
 
 module Relspec
   module Builder
@@ -100,7 +101,7 @@ module Relspec
             next false if live[entry.source]
 
             result = JobResult.read(result_path(entry.source), @dir)
-            next false unless result&.built? && result.mismatch.nil?
+            next false unless result&.built? && result.problem(entry.source, entry.version).nil?
 
             report(Scheduler::Outcome.new(entry: entry, status: :built, value: result.paths, duration: result.duration))
             true
@@ -165,7 +166,7 @@ module Relspec
 
         def submit(path, source, log, deps)
           feature = @settings.feature(@target.arch)
-          options = ["--job-name=#{job_name(source)}", "--output=#{log}", "--open-mode=truncate",
+          options = ["--job-name=#{job_name(source)}", "--output=#{FilePattern.escape(log)}", "--open-mode=truncate",
                      "--chdir=#{@jobs_dir}", "--kill-on-invalid-dep=yes", *@settings.sbatch_options,
                      *(feature ? ["--constraint=#{feature}"] : []),
                      *(deps.empty? ? [] : ["--dependency=afterok:#{deps.join(':')}"])]
@@ -214,12 +215,11 @@ module Relspec
           result = JobResult.read(result_path(entry.source), @dir)
           state = job&.state
           if (state.nil? || state == COMPLETED) && result&.built?
-            mismatch = result.mismatch
+            problem = result.problem(entry.source, entry.version)
             built = Scheduler::Outcome.new(entry: entry, status: :built, value: result.paths, duration: result.duration)
-            return report(built) unless mismatch
+            return report(built) unless problem
 
-            return fail(entry, "#{entry.source}: #{mismatch['name']} is not what the job wrote (size or SHA256 " \
-                               "differ; is #{@dir} on a filesystem every node shares?)", result&.duration)
+            return fail(entry, "#{entry.source}: Slurm job #{id}: #{problem}", result&.duration)
           end
           root = failed_root(entry)
           return skip(entry, skip_reason(root)) if root

@@ -1,13 +1,15 @@
 # frozen_string_literal: true
 
 require "digest"
+require "open3"
 
 module Relspec
   module Builder
     module Slurm
-      # The result file a job wrote last (JobScript), checked against the
-      # files on the shared filesystem: a built result counts only when
-      # every file it lists is there with the size and SHA256 the node saw.
+      # The result file a job wrote last (JobScript), checked as a local
+      # build's files are (#problem): a built result counts only when every
+      # file it lists is in the package's results folder, with the size and
+      # SHA256 the node saw, and is of that package.
       class JobResult
         attr_reader :status, :exit_status, :duration, :files
 
@@ -41,14 +43,73 @@ module Relspec
           @status == "built"
         end
 
-        # The first listed file that is missing or has other bytes than
-        # the node recorded; nil when all match.
-        def mismatch
-          @files.find do |file|
-            path = File.join(@dir, file["name"])
-            !File.file?(path) || File.size(path) != file["size"] || Digest::SHA256.file(path).hexdigest != file["sha256"]
+        # Why the result cannot be recorded as +source+'s build at +version+
+        # (a node is not trusted more than a local build): nil when every
+        # listed file is a plain file in results/<source>/ with the bytes
+        # the node recorded, there is a .deb, and every .deb, .buildinfo
+        # and .changes is of that source and version.
+        def problem(source, version)
+          return "the job's result lists no file" if @files.empty?
+
+          folder = "results/#{source}/"
+          @files.each do |file|
+            name = file["name"].to_s
+            reason = placement(name, folder) || bytes(name, file) || ownership(name, source, version)
+            return reason if reason
           end
+          return "the job's result lists no .deb" unless @files.any? { |file| file["name"].end_with?(".deb", ".udeb") }
+
+          nil
         end
+
+        private
+
+        def placement(name, folder)
+          base = name.delete_prefix(folder)
+          return nil if name.start_with?(folder) && !base.empty? && !base.include?("/") && !%w[. ..].include?(base) &&
+                        !base.match?(/[[:cntrl:]]/)
+
+          "#{name.inspect} is not a file of #{folder} (a job's files stay in its package's results folder)"
+        end
+
+        def bytes(name, file)
+          path = File.join(@dir, name)
+          return "#{name} is missing" unless File.lstat(path).file?
+          return nil if File.size(path) == file["size"] && Digest::SHA256.file(path).hexdigest == file["sha256"]
+
+          "#{name} is not what the job wrote (size or SHA256 differ; is #{@dir} on a filesystem every node shares?)"
+        rescue SystemCallError
+          "#{name} is missing"
+        end
+
+        # A .deb says its source and version in its control fields; the
+        # other files name them in the file name.
+        def ownership(name, source, version)
+          base = File.basename(name)
+          unless base.end_with?(".deb", ".udeb")
+            return nil if base.start_with?("#{source}_#{version.sub(/\A\d+:/, '')}_")
+
+            return "#{name} is not a file of #{source} #{version}"
+          end
+          owner, owner_version = deb_source(File.join(@dir, name))
+          return nil if [owner, owner_version] == [source, version]
+
+          "#{name} is a binary package of #{owner || 'no source'} #{owner_version}, not of #{source} #{version}"
+        end
+
+        # [source, version] of a .deb; [nil, nil] when it is not readable.
+        def deb_source(path)
+          output, status = Open3.capture2e("dpkg-deb", "--field", path, "Package", "Source", "Version")
+          return [nil, nil] unless status.success?
+
+          fields = output.lines.to_h { |line| line.chomp.split(": ", 2) }
+          source = fields["Source"]&.split(" (")&.first || fields["Package"]
+          [source, fields["Source"]&.[](/\((.+)\)/, 1) || fields["Version"]]
+        rescue SystemCallError
+          [nil, nil]
+        end
+
+        public
 
         def paths
           @files.map { |file| File.join(@dir, file["name"]) }
