@@ -21,7 +21,6 @@ module Relspec
       end
 
       def call
-        listener = @progress_io&.tty? && @format == "text" ? BuildProgress.new(@progress_io) : nil
         settings = Builder::Slurm::Settings.load(user_dir: config_home, project_dir: Dir.pwd, pairs: @slurm)
         reports = Builder.run(@path, **@options, slurm_settings: settings, listener: listener)
         @format == "json" ? @io.puts(JSON.pretty_generate(reports.map { |report| as_json(report) })) : print_text(reports)
@@ -29,6 +28,15 @@ module Relspec
       end
 
       private
+
+      # A bar on a terminal, a line per package start and end elsewhere
+      # (logs); none for --quiet or --format json (a tool reads stdout, the
+      # lines would only be noise on stderr for it).
+      def listener
+        return nil unless @progress_io && @format == "text"
+
+        @progress_io.tty? ? BuildProgress.new(@progress_io) : BuildProgressLines.new(@progress_io)
+      end
 
       # The user's configuration folder (XDG), nil without a home.
       def config_home

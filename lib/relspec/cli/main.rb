@@ -167,6 +167,7 @@ module Relspec
       def build(path)
         require_relative "build_command"
         require_relative "build_progress"
+        require_relative "build_progress_lines"
         finish BuildCommand.new(path: path, out: options[:out], backend: options[:backend], jobs: options[:jobs],
                                 targets: options[:target], keep_going: options[:keep_going],
                                 rebuild: options[:rebuild], prepare: options[:prepare], format: options[:format],

@@ -28,6 +28,11 @@ RSpec.describe "relspec build --backend host" do
                                    "install them, or build with --backend sbuild), see logs/#{source}.log")
     expect(run.stdout).to include("bookworm/amd64: 0 built, 0 already built, 1 failed, 0 skipped")
     expect(File.read(File.join(@release.target_dir, "logs", "#{source}.log"))).not_to include("dpkg-buildpackage")
+    # stderr is a pipe here, as in CI logs: a line per package start and end, no progress bar
+    lines = run.stderr.lines
+    expect(lines.first(2)).to eq(["bookworm/amd64: 1 package, 0 already built\n",
+                                  "bookworm/amd64 [0/1] started #{source}\n"])
+    expect(lines.drop(2)).to match([%r{\Abookworm/amd64 \[1/1\] failed #{source} in \d+\.\d s\n\z}])
   end
 
   it "refuses a release that was not compiled, saying what to run" do
