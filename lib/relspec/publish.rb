@@ -20,6 +20,7 @@ require_relative "publish/reprepro"
 require_relative "publish/signing_key"
 require_relative "publish/locked_release"
 require_relative "publish/held_packages"
+require_relative "report"
 
 module Relspec
   # `relspec publish`: the built packages of a release into its reprepro
@@ -28,6 +29,9 @@ module Relspec
   # follows the spec, publishing the same results again changes nothing, and
   # a run interrupted anywhere is finished by the next one.
   module Publish
+    # The folder of the repository that holds the release's status page.
+    REPORT_DIR = "report"
+
     # Per target: +published+ the sources included now, +held+ those the
     # repository had already, +left_out+ the failed/skipped entries, +built+
     # false when the target has no build-results.yml.
@@ -35,8 +39,9 @@ module Relspec
     # +stale_lock+: reprepro's lock file a killed reprepro had left, removed
     # before publishing (nil: there was none); +rolled_back+: the database
     # of an interrupted publish was put back first (DatabaseSnapshot).
+    # +report+: the status page written next to the repository (Report).
     Result = Struct.new(:release, :repository, :targets, :osdeps_written, :osdeps_missing, :stale_lock, :rolled_back,
-                        keyword_init: true)
+                        :report, keyword_init: true)
 
     # +target+: "codename/arch" or nil (all targets); +waiting+: called
     # when another publisher holds the repository.
@@ -50,7 +55,11 @@ module Relspec
       # No build of these targets runs while their results are read and included.
       holding(built_folders(tree, selected)) do
         locked = LockedRelease.read(resolution, path, timeout: timeout)
-        include_and_render(locked, tree, effective, repository, all, selected, waiting: waiting, explicit: !target.nil?)
+        result = include_and_render(locked, tree, effective, repository, all, selected, waiting: waiting,
+                                                                                        explicit: !target.nil?)
+        # served with the repository: the state of every target, the failures too
+        result.report = Report.run(path, out: out, dir: File.join(repository, REPORT_DIR))
+        result
       end
     end
 
