@@ -23,7 +23,8 @@ module Relspec
           via[entry.source] = before
           finish[entry.source] = (before ? finish[before] : 0) + durations.fetch(entry.source, 0)
         end
-        last = finish.keys.max_by { |source| [finish[source], invert(source)] }
+        # it ends with a build that took time (the skipped after a failure did not)
+        last = finish.keys.select { |source| durations.key?(source) }.max_by { |source| [finish[source], invert(source)] }
         return [] if last.nil? || finish[last].zero?
 
         chain(last, via).map { |source| Step.new(source: source, duration: durations.fetch(source, 0)).freeze }
@@ -37,7 +38,7 @@ module Relspec
 
       # Sorts names descending inside max_by, so that the smallest name wins a tie.
       def invert(name)
-        name.bytes.map { |byte| -byte } + [0]
+        name.bytes.map(&:-@) + [0]
       end
     end
   end

@@ -26,8 +26,9 @@ module Relspec
         .totals span { margin-right: 10px; white-space: nowrap; } .muted { color: #606060; }
         .error { background: #fff3f1; border-left: 4px solid #c0392b; padding: 6px 8px; margin: 6px 0 12px; }
         ol, ul { padding-left: 1.3rem; } li { margin: 2px 0; } a { color: #0b57a4; overflow-wrap: anywhere; }
-        code { overflow-wrap: anywhere; }
+        td code, td b { white-space: nowrap; }
         @media (max-width: 600px) { body { font-size: 14px; padding: 0 8px 16px; }
+          td code { white-space: normal; overflow-wrap: anywhere; }
           thead { display: none; } tr { display: block; padding: 6px 0; border-bottom: 1px solid #ccc; }
           td { display: block; border: none; padding: 1px 0; } td.num { text-align: left; }
           td[data-label]::before { content: attr(data-label) ": "; color: #606060; }
