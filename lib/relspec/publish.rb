@@ -55,10 +55,13 @@ module Relspec
       # No build of these targets runs while their results are read and included.
       holding(built_folders(tree, selected)) do
         locked = LockedRelease.read(resolution, path, timeout: timeout)
+        # The status page, served with the repository (every target, the
+        # failures too): its inputs read before the repository is touched,
+        # so that a damaged one stops the publication, not half of it.
+        page, logs = Report.read(path, out: out)
         result = include_and_render(locked, tree, effective, repository, all, selected, waiting: waiting,
                                                                                         explicit: !target.nil?)
-        # served with the repository: the state of every target, the failures too
-        result.report = Report.run(path, out: out, dir: File.join(repository, REPORT_DIR))
+        result.report = Report.write(page, logs, File.join(repository, REPORT_DIR), "html")
         result
       end
     end
