@@ -29,13 +29,25 @@ module Relspec
 
       private
 
-      # A bar on a terminal, a line per package start and end elsewhere
-      # (logs); none for --quiet or --format json (a tool reads stdout, the
-      # lines would only be noise on stderr for it).
+      # A bar on stderr when it is a terminal; a line per package start and
+      # end on stdout when it is not one, so that `relspec build > log`, CI
+      # logs and `bin/demo > log` show where a build is (both when only
+      # stdout goes to a file). None for --quiet or --format json (stdout is
+      # then a tool's).
       def listener
         return nil unless @progress_io && @format == "text"
 
-        @progress_io.tty? ? BuildProgress.new(@progress_io) : BuildProgressLines.new(@progress_io)
+        listeners = []
+        listeners << BuildProgress.new(@progress_io) if @progress_io.tty?
+        listeners << BuildProgressLines.new(@io) unless @io.tty?
+        listeners.size > 1 ? Listeners.new(listeners) : listeners.first
+      end
+
+      # Several progress listeners as one (Builder.run takes one).
+      Listeners = Struct.new(:all) do
+        %i[start building finished].each do |event|
+          define_method(event) { |*args| all.each { |listener| listener.public_send(event, *args) } }
+        end
       end
 
       # The user's configuration folder (XDG), nil without a home.
