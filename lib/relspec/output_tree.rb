@@ -22,6 +22,11 @@ module Relspec
       File.join(out, release)
     end
 
+    # `relspec report`'s page and the logs it links to (Report).
+    def report_dir
+      File.join(release_dir, "report")
+    end
+
     # Orig tarballs kept across compiles, by SHA256 (Debian::OrigCache).
     def orig_cache
       File.join(release_dir, ".orig")

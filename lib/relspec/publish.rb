@@ -21,6 +21,7 @@ require_relative "publish/reprepro"
 require_relative "publish/signing_key"
 require_relative "publish/locked_release"
 require_relative "publish/held_packages"
+require_relative "report"
 
 module Relspec
   # `relspec publish`: the built packages of a release into its reprepro
@@ -29,6 +30,9 @@ module Relspec
   # follows the spec, publishing the same results again changes nothing, and
   # a run interrupted anywhere is finished by the next one.
   module Publish
+    # The folder of the repository that holds the release's status page.
+    REPORT_DIR = "report"
+
     # Per target: +published+ the sources included now, +held+ those the
     # repository had already, +left_out+ the failed/skipped entries, +built+
     # false when the target has no build-results.yml.
@@ -36,8 +40,9 @@ module Relspec
     # +stale_lock+: reprepro's lock file a killed reprepro had left, removed
     # before publishing (nil: there was none); +recovered+: what became of
     # an interrupted publish's work (Transaction#recover; nil: none).
+    # +report+: the status page written next to the repository (Report).
     Result = Struct.new(:release, :repository, :targets, :osdeps_written, :osdeps_missing, :stale_lock, :recovered,
-                        keyword_init: true)
+                        :report, keyword_init: true)
 
     # +target+: "codename/arch" or nil (all targets); +waiting+: called
     # when another publisher holds the repository.
@@ -51,7 +56,14 @@ module Relspec
       # No build of these targets runs while their results are read and included.
       holding(built_folders(tree, selected)) do
         locked = LockedRelease.read(resolution, path, timeout: timeout)
-        include_and_render(locked, tree, effective, repository, all, selected, waiting: waiting, explicit: !target.nil?)
+        # The status page, served with the repository (every target, the
+        # failures too): its inputs read before the repository is touched,
+        # so that a damaged one stops the publication, not half of it.
+        page, logs = Report.read(path, out: out)
+        result = include_and_render(locked, tree, effective, repository, all, selected, waiting: waiting,
+                                                                                        explicit: !target.nil?)
+        result.report = Report.write(page, logs, File.join(repository, REPORT_DIR), "html")
+        result
       end
     end
 

@@ -16,6 +16,7 @@ RSpec.describe Relspec::OutputTree do
     expect(tree.plan_file(target)).to eq("build/demo/bookworm-amd64/plan.yml")
     expect(tree.results_file(target)).to eq("build/demo/bookworm-amd64/build-results.yml")
     expect(tree.logs_dir(target)).to eq("build/demo/bookworm-amd64/logs")
+    expect(tree.report_dir).to eq("build/demo/report")
     expect(tree).to be_frozen
   end
 

@@ -21,7 +21,6 @@ module Relspec
       end
 
       def call
-        listener = @progress_io&.tty? && @format == "text" ? BuildProgress.new(@progress_io) : nil
         settings = Builder::Slurm::Settings.load(user_dir: config_home, project_dir: Dir.pwd, pairs: @slurm)
         reports = Builder.run(@path, **@options, slurm_settings: settings, listener: listener)
         @format == "json" ? @io.puts(JSON.pretty_generate(reports.map { |report| as_json(report) })) : print_text(reports)
@@ -29,6 +28,27 @@ module Relspec
       end
 
       private
+
+      # A bar on stderr when it is a terminal; a line per package start and
+      # end on stdout when it is not one, so that `relspec build > log`, CI
+      # logs and `bin/demo > log` show where a build is (both when only
+      # stdout goes to a file). None for --quiet or --format json (stdout is
+      # then a tool's).
+      def listener
+        return nil unless @progress_io && @format == "text"
+
+        listeners = []
+        listeners << BuildProgress.new(@progress_io) if @progress_io.tty?
+        listeners << BuildProgressLines.new(@io) unless @io.tty?
+        listeners.size > 1 ? Listeners.new(listeners) : listeners.first
+      end
+
+      # Several progress listeners as one (Builder.run takes one).
+      Listeners = Struct.new(:all) do
+        %i[start building finished].each do |event|
+          define_method(event) { |*args| all.each { |listener| listener.public_send(event, *args) } }
+        end
+      end
 
       # The user's configuration folder (XDG), nil without a home.
       def config_home

@@ -143,6 +143,14 @@ module Relspec
                                   out_io: $stdout, err_io: $stderr).call
       end
 
+      desc "report SPEC", "Write the release's status page (<out>/<release>/report/index.html; docs/report.md)"
+      option :out, type: :string, default: "build", desc: "Where relspec compile and build wrote"
+      option :format, enum: %w[html json], default: "html", desc: "Output format"
+      def report(path)
+        require_relative "report_command"
+        finish ReportCommand.new(path: path, out: options[:out], format: options[:format], out_io: $stdout).call
+      end
+
       desc "build SPEC", "Build the source packages compile wrote, in dependency order (sbuild or this host)"
       long_desc <<~TEXT
         Reads <out>/<release>/<codename>-<arch>/plan.yml of each target and builds its
@@ -167,6 +175,7 @@ module Relspec
       def build(path)
         require_relative "build_command"
         require_relative "build_progress"
+        require_relative "build_progress_lines"
         finish BuildCommand.new(path: path, out: options[:out], backend: options[:backend], jobs: options[:jobs],
                                 targets: options[:target], keep_going: options[:keep_going],
                                 rebuild: options[:rebuild], prepare: options[:prepare], format: options[:format],

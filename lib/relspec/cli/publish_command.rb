@@ -27,6 +27,7 @@ module Relspec
         result.targets.each { |target| report(target) }
         @io.puts("#{result.release}: #{result.repository}: #{result.osdeps_written.zero? ? 'osdeps unchanged' : "wrote #{result.osdeps_written} osdeps files"}")
         note_missing(result.osdeps_missing)
+        @io.puts("status page: #{result.report}")
         0
       end
 

@@ -37,7 +37,7 @@ module Relspec
       end
 
       def steps(cause)
-        cause.chain.each_with_index.map { |step, depth| "#{'  ' * (depth + 1)}#{'└ ' if depth.positive?}#{step}" }.join("\n")
+        Plan::Cause.steps(cause.chain).join("\n")
       end
 
       def explain(target, decision)

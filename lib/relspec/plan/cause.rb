@@ -48,6 +48,13 @@ module Relspec
         new(:unavailable_dependency, package, cause)
       end
 
+      # A chain's lines (+chain+: #chain, or a lock's causes) as `relspec
+      # why` and the report show them: each step indented under the one it
+      # explains.
+      def self.steps(chain)
+        chain.each_with_index.map { |step, depth| "#{'  ' * (depth + 1)}#{'└ ' if depth.positive?}#{step}" }
+      end
+
       def initialize(kind, detail, because)
         @kind = kind
         @detail = detail

@@ -28,6 +28,13 @@ RSpec.describe "relspec build --backend host" do
                                    "install them, or build with --backend sbuild), see logs/#{source}.log")
     expect(run.stdout).to include("bookworm/amd64: 0 built, 0 already built, 1 failed, 0 skipped")
     expect(File.read(File.join(@release.target_dir, "logs", "#{source}.log"))).not_to include("dpkg-buildpackage")
+    # stdout is a pipe here, as in CI logs: a line per package start and end before the table
+    lines = run.stdout.lines
+    expect(lines.first(2)).to eq(["bookworm/amd64: 1 package, 0 already built\n",
+                                  "bookworm/amd64 [0/1] started #{source}\n"])
+    expect(lines[2]).to match(%r{\Abookworm/amd64 \[1/1\] failed #{source} in \d+\.\d s\n\z})
+    expect(lines[3]).to start_with("bookworm/amd64: 0 built, 0 already built, 1 failed, 0 skipped")
+    expect(run.stderr).to eq("") # no bar: stderr is no terminal
   end
 
   it "refuses a release that was not compiled, saying what to run" do

@@ -51,6 +51,8 @@ RSpec.describe "resuming relspec build", order: :defined do
     _, status = Process.wait2(pid)
     expect(status.exitstatus).to eq(130)
     expect(File.read(File.join(@dir, "stderr"))).to eq("relspec: interrupted\n")
+    # stdout is a file: the progress lines of what started and ended
+    expect(File.read(File.join(@dir, "stdout")).lines).to all(match(%r{\Abookworm/amd64(: | \[\d+/\d+\] (started|built) )}))
     expect(packages.transform_values { |record| record["status"] })
       .to eq(@release.source("base/a1") => "built", @release.source("base/a2") => "built")
   end

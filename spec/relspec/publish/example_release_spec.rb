@@ -3,6 +3,7 @@
 require "spec_helper"
 require "json"
 require "yaml"
+require_relative "../../support/headless_chromium"
 
 # The shipped example for real on this machine's distribution (bookworm/amd64):
 # demo-base compiled, built (`relspec build --backend host`) and published; demo-child planned against
@@ -12,7 +13,9 @@ require "yaml"
 # configuration with both repositories and this machine's archive), and an
 # installed demo-child package finds its inherited demo-base dependency
 # through env.sh. The specs are the project's own, in a copy of the project.
-RSpec.describe "the example releases, built and published on bookworm" do
+# Then base/types is broken in the copy and demo-child built again: its
+# status page, read by a real browser with the network cut.
+RSpec.describe "the example releases, built and published on bookworm", order: :defined do
   def target_name
     "bookworm/amd64"
   end
@@ -21,7 +24,7 @@ RSpec.describe "the example releases, built and published on bookworm" do
     @dir = Dir.mktmpdir("relspec-example")
     FileUtils.mkdir_p(File.join(@dir, "specs"))
     %w[demo-base demo-child].each { |name| FileUtils.cp(File.join(CliRunner::ROOT, "specs", "#{name}.yml"), File.join(@dir, "specs")) }
-    DemoWorkspace.build(File.join(@dir, "examples"))
+    @workspace = DemoWorkspace.build(File.join(@dir, "examples"))
   end
 
   after(:all) { FileUtils.rm_rf(@dir) }
@@ -70,7 +73,10 @@ RSpec.describe "the example releases, built and published on bookworm" do
 
     run!("compile", "specs/demo-child.yml", "--out", "out")
     run!("build", "specs/demo-child.yml", "--out", "out", "--backend", "host", "--target", target_name)
-    run!("publish", "specs/demo-child.yml", "--out", "out", "--target", target_name)
+    publish = run!("publish", "specs/demo-child.yml", "--out", "out", "--target", target_name)
+    # the status page is served with the repository
+    expect(publish.stdout).to include("status page: #{File.join(repository('demo-child'), 'report', 'index.html')}")
+    expect(File.read(File.join(repository("demo-child"), "report", "index.html"))).to include("<h1>Release demo-child</h1>")
     names = deb_names("demo-child")
     expect(names.grep(/\Arock-demo-child-/).size).to eq(3)
     expect(names.grep(/\Arock-demo-base-/).size).to eq(4)
@@ -94,5 +100,56 @@ RSpec.describe "the example releases, built and published on bookworm" do
     expect(status).to be_success, output
     expect(output.strip.split(":")).to include(driver, "/opt/rock/demo-base/rock-demo-base-base-logging",
                                                "/opt/rock/demo-child/rock-demo-child-base-types")
+  end
+
+  # base/types's tag v2.0.0 (demo-child's pin) moved to a commit whose CMake
+  # stops with a message in markup: the page must show it as text.
+  def break_base_types
+    source = @workspace.source_dir("base/types")
+    File.write(File.join(source, "CMakeLists.txt"), "cmake_minimum_required(VERSION 3.10)\nproject(types NONE)\n" \
+                                                    "message(FATAL_ERROR \"types <b>broken</b> & on purpose\")\n")
+    @workspace.git(source, "add", "-A")
+    @workspace.git(source, "commit", "-q", "-m", "Broken", date: "2020-07-01T00:00:00Z")
+    @workspace.git(source, "tag", "-f", "v2.0.0")
+  end
+
+  # Every row of the page's package table: package => its cells' text.
+  def rows(dom)
+    dom[%r{<h3>Packages</h3>.*?</table>}m].scan(%r{<tr><td>([^<]+)</td>(.*?)</tr>}m).to_h { |package, cells| [package, cells.gsub(/<[^>]+>/, " ").squeeze(" ").strip] }
+  end
+
+  it "writes a status page a browser shows offline: the failure, its log, what it blocks, what is inherited" do
+    break_base_types
+    run!("compile", "specs/demo-child.yml", "--out", "out")
+    build = relspec("build", "specs/demo-child.yml", "--out", "out", "--backend", "host", chdir: @dir)
+    expect(build.exit_code).to eq(1), build.stdout + build.stderr
+    page = File.join(@dir, "out", "demo-child", "report", "index.html")
+    expect(run!("report", "specs/demo-child.yml", "--out", "out").stdout).to eq("wrote out/demo-child/report/index.html\n")
+    first = File.binread(page)
+    run!("report", "specs/demo-child.yml", "--out", "out")
+    expect(File.binread(page)).to eq(first)
+
+    # nothing to fetch: every link and source is on the page or next to it
+    expect(first.scan(/(?:href|src)="([^"]*)"/).flatten).to all(match(%r{\A(#|logs/)}))
+    expect(first).not_to match(/<script|<link|<img|@import|url\(/i)
+
+    dom = HeadlessChromium.dump_dom(page)
+    table = rows(dom)
+    expect(table.fetch("base/types")).to include("built here", "failed")
+    %w[drivers/iodrivers_base tools/orocos.rb].each do |package|
+      expect(table.fetch(package)).to include("skipped because of base/types")
+    end
+    %w[base/cmake base/logging data/models tools/legacy].each do |package|
+      expect(table.fetch(package)).to start_with("inherited from demo-base")
+    end
+    # the first error line, as text (the markup of the log is not the page's)
+    expect(dom).to include("CMake Error at CMakeLists.txt:3 (message):\ntypes &lt;b&gt;broken&lt;/b&gt; &amp; on purpose")
+    log = dom[/<a href="([^"]+)">whole log</, 1]
+    expect(File.read(File.join(File.dirname(page), log))).to include("types <b>broken</b> & on purpose")
+    expect(dom).to match(%r{<li><b>base/types</b> blocks 2 packages: drivers/iodrivers_base, tools/orocos.rb</li>})
+
+    artefacts = ENV.fetch("RELSPEC_TEST_ARTEFACTS", File.join(CliRunner::ROOT, "tmp", "artefacts"))
+    FileUtils.mkdir_p(artefacts)
+    HeadlessChromium.screenshot(page, File.join(artefacts, "report-phone.png"), width: 412, height: 1900)
   end
 end

@@ -1,0 +1,79 @@
+# frozen_string_literal: true
+
+require "fileutils"
+require_relative "release_spec"
+require_relative "project"
+require_relative "output_tree"
+require_relative "target"
+require_relative "atomic_file"
+require_relative "error"
+require_relative "plan/lock_parser"
+require_relative "builder/build_plan"
+require_relative "builder/build_results"
+require_relative "report/reading"
+require_relative "report/html_renderer"
+require_relative "report/json_renderer"
+
+module Relspec
+  # `relspec report` (and `relspec publish`, next to the repository): a
+  # release at a glance, one static page (docs/report.md) made from the
+  # lock, each target's plan.yml, build-results.yml and logs. The same inputs
+  # give the same bytes.
+  module Report
+    FORMATS = %w[html json].freeze
+    FILES = { "html" => "index.html", "json" => "report.json" }.freeze
+    LOGS = "logs"
+
+    module_function
+
+    # Reads the release of the spec at +path+ (+out+: where compile and
+    # build wrote) and writes its report in +format+ into +dir+ (default
+    # <out>/<release>/report/). Returns the written file's path.
+    def run(path, out:, format: "html", dir: nil)
+      raise InvalidOption, "unknown format #{format.inspect} (known: #{FORMATS.join(', ')})" unless FORMATS.include?(format)
+
+      page, logs = read(path, out: out)
+      write(page, logs, dir || OutputTree.new(out, page.release).report_dir, format)
+    end
+
+    # The Page of the release of the spec at +path+, and the logs it links
+    # to (link => file).
+    def read(path, out:)
+      effective = ReleaseSpec.resolve(path).effective
+      release = effective.release
+      project = Project.of_spec(path)
+      lock = Plan::LockParser.read(project.lock_path(release), release: release)
+      raise Error, "#{release} has no #{project.lock_path(release)}: run `relspec compile` first" unless lock
+
+      ancestor = effective.parents.first
+      tree = OutputTree.new(out, release)
+      inputs = Target.all(effective).map { |target| input(tree, target, release) }
+      Reading.new(lock: lock, inputs: inputs, ancestor: ancestor,
+                  ancestor_lock: ancestor && Plan::LockParser.read(project.lock_path(ancestor), release: ancestor)).page
+    end
+
+    def input(tree, target, release)
+      dir = tree.target_dir(target)
+      plan = File.exist?(tree.plan_file(target)) ? Builder::BuildPlan.read(dir) : nil
+      results = File.exist?(tree.results_file(target)) ? Builder::BuildResults.load(dir, release: release, target: target) : nil
+      Reading::Input.new(target: target, dir: dir, plan: plan, results: results).freeze
+    end
+
+    # Writes +page+ as FILES[format] into +dir+ with a copy of each log it
+    # links to (logs no longer linked are removed). Returns the file's path.
+    def write(page, logs, dir, format)
+      logs.each do |link, file|
+        FileUtils.mkdir_p(File.dirname(File.join(dir, link)))
+        AtomicFile.update(File.join(dir, link), File.binread(file))
+      end
+      FileUtils.mkdir_p(dir)
+      Dir.glob("**/*", base: File.join(dir, LOGS)).each do |name|
+        file = File.join(dir, LOGS, name)
+        FileUtils.rm_f(file) if File.file?(file) && !logs.key?(File.join(LOGS, name))
+      end
+      path = File.join(dir, FILES.fetch(format))
+      AtomicFile.update(path, format == "json" ? JsonRenderer.render(page) : HtmlRenderer.new.render(page))
+      path
+    end
+  end
+end
