@@ -143,6 +143,19 @@ module Relspec
                                   out_io: $stdout, err_io: $stderr).call
       end
 
+      desc "abi SPEC", "ABI verdicts (unchanged, compatible, changed, incompatible, new) of the libraries the " \
+                       "release builds, against its ancestors' published dumps (docs/abi.md)"
+      option :out, type: :string, default: "build", desc: "Where relspec compile and build wrote"
+      option :target, type: :string, desc: "Only this target (codename/arch)"
+      option :against, type: :string, desc: "Compare with this release (an ancestor, or the release itself)"
+      option :format, enum: %w[text markdown json], default: "text", desc: "Output format"
+      option :fail_on, enum: %w[changed incompatible], desc: "Exit 1 when a library's verdict is this or worse"
+      def abi(path)
+        require_relative "abi_command"
+        finish AbiCommand.new(path: path, out: options[:out], target: options[:target], against: options[:against],
+                              format: options[:format], fail_on: options[:fail_on], out_io: $stdout).call
+      end
+
       desc "build SPEC", "Build the source packages compile wrote, in dependency order (sbuild or this host)"
       long_desc <<~TEXT
         Reads <out>/<release>/<codename>-<arch>/plan.yml of each target and builds its
