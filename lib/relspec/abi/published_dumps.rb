@@ -51,7 +51,9 @@ module Relspec
       # earlier publish of the same release).
       def self.write(repository, target, target_dir, records)
         dir = dir(repository, target)
-        known = read(repository, target).entries.to_h { |entry| [[entry.source, entry.library], entry] }
+        known = read(repository, target).entries.to_h do |entry|
+          [[entry.source, entry.library], entry.dup.tap { |kept| kept.file = entry.file.delete_prefix("#{dir}/") }]
+        end
         records.each do |record|
           known.reject! { |(source, _), _| source == record.source }
           record.files.each do |file|
