@@ -143,8 +143,7 @@ module Relspec
                                   out_io: $stdout, err_io: $stderr).call
       end
 
-      desc "abi SPEC", "ABI verdicts (unchanged, compatible, changed, incompatible, new) of the libraries the " \
-                       "release builds, against its ancestors' published dumps (docs/abi.md)"
+      desc "abi SPEC", "ABI verdict of each library the release builds, against the ancestors' dumps (docs/abi.md)"
       option :out, type: :string, default: "build", desc: "Where relspec compile and build wrote"
       option :target, type: :string, desc: "Only this target (codename/arch)"
       option :against, type: :string, desc: "Compare with this release (an ancestor, or the release itself)"
@@ -235,6 +234,7 @@ module Relspec
       option :exit_code, type: :boolean, default: false, desc: "Exit 1 when something differs, 2 on an error"
       option :fail_on_rebuilds, type: :numeric, desc: "Exit 1 when more than this many packages are rebuilt"
       option :color, type: :boolean, desc: "Colour the text format (default: when writing to a terminal)"
+      option :abi_out, type: :string, desc: "With the builds there, show the rebuilt libraries' ABI verdicts (docs/abi.md)"
       option :timeout, type: :numeric, default: 10, desc: "HTTP timeout in seconds (specs are planned)"
       def diff(*paths)
         require_relative "diff_command"
@@ -244,7 +244,7 @@ module Relspec
           status = DiffCommand.new(paths: paths, base: options[:base], format: options[:format],
                                    exit_code: options[:exit_code], fail_on_rebuilds: options[:fail_on_rebuilds]&.to_i,
                                    timeout: options[:timeout], out: $stdout, err: $stderr,
-                                   color: options.fetch(:color) { $stdout.tty? }).call
+                                   color: options.fetch(:color) { $stdout.tty? }, abi_out: options[:abi_out]).call
         end
         # With --exit-code, 1 means "differences": an error must say 2.
         failed = DIFF_ERROR if failed.nonzero? && options[:exit_code]

@@ -112,6 +112,17 @@ RSpec.describe "relspec abi on a real library", :tmpdir do
     expect(entry["summary"].first).to start_with("Functions changes summary: 0 Removed, 1 Changed")
   end
 
+  it "shows the verdicts of the libraries a change builds in relspec diff's markdown and json, with --abi-out" do
+    locks = ["releases/same/lock.yml", "releases/changed/lock.yml"]
+    json = JSON.parse(run!("diff", *locks, "--format", "json", "--abi-out", "out").stdout)
+    expect(json.fetch("abi").fetch("changed").fetch("bookworm/amd64").map { |entry| entry.values_at("package", "verdict", "against") })
+      .to eq([["base/logging", "changed", "parent"]])
+    markdown = run!("diff", *locks, "--format", "markdown", "--abi-out", "out").stdout
+    expect(markdown).to include("### ABI of changed on bookworm/amd64\n\n1 library: 1 changed\n")
+    expect(markdown).to include("'unsigned int mMaxLineLength', at offset 64 (in bits)")
+    expect(run!("diff", *locks, "--format", "json").stdout).not_to include('"abi"') # only when asked
+  end
+
   it "refuses an --against that is neither the release nor an ancestor, naming those" do
     run = relspec("abi", "specs/changed.yml", "--out", "out", "--against", "nightly", chdir: @root)
     expect(run.status.exitstatus).to eq(1)
