@@ -5,10 +5,13 @@ require "tmpdir"
 require "zlib"
 require_relative "../error"
 require_relative "verdict"
+require_relative "dumper"
+require_relative "type_registry"
 
 module Relspec
   module Abi
-    # Compares two stored dumps (.abi.xml.gz) of one library with `abidiff`:
+    # Compares two stored dumps (.abi.xml.gz) of one library with `abidiff`
+    # (two type registries of a typekit with TypeRegistry):
     # the dumps are read, not the libraries, so nothing is extracted again
     # (docs/abi.md). abidiff's exit status is a bit field: 1 an error, 2 a
     # usage error (both a ToolError here), 4 an ABI change, 8 an
@@ -26,6 +29,8 @@ module Relspec
         Dir.mktmpdir("relspec-abidiff") do |dir|
           old_xml = unpack(old, File.join(dir, "old.xml"))
           new_xml = unpack(new, File.join(dir, "new.xml"))
+          return registries(old_xml, old, new_xml, new) if Dumper.registry?(Dumper.library_of(old).to_s)
+
           output, error, status = Open3.capture3("abidiff", "--no-show-locs", old_xml, new_xml)
           code = status.exitstatus
           if code.nil? || code.anybits?(ERROR_BITS)
@@ -36,6 +41,11 @@ module Relspec
         end
       rescue Errno::ENOENT
         raise ToolError, "cannot run abidiff (is abigail-tools installed? bin/setup installs it)"
+      end
+
+      # Two oroGen type registries, compared type by type (TypeRegistry).
+      def registries(old_xml, old, new_xml, new)
+        TypeRegistry.parse(File.read(old_xml), file: old).compare(TypeRegistry.parse(File.read(new_xml), file: new))
       end
 
       def unpack(dump, to)

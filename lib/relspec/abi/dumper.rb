@@ -21,6 +21,9 @@ module Relspec
       Dump = Struct.new(:library, :path, keyword_init: true)
 
       LIBRARY = /\Alib[A-Za-z0-9._+-]*\.so(?:\.[0-9]+)*\z/
+      # An oroGen typekit's type registry (TypeRegistry), kept as it is.
+      REGISTRY = /\A[A-Za-z0-9_][A-Za-z0-9._+-]*\.tlb\z/
+      REGISTRY_DIR = File.join("share", "orogen")
       ELF = "\x7FELF".b
       DEBUG_ROOT = File.join("usr", "lib", "debug")
       ABIDW = ["abidw", "--no-corpus-path", "--no-comp-dir-path"].freeze
@@ -39,11 +42,23 @@ module Relspec
         return nil unless name.end_with?(SUFFIX)
 
         library = name.delete_suffix(SUFFIX)
-        library.match?(LIBRARY) ? library : nil
+        dumped?(library) ? library : nil
+      end
+
+      # True for the name of a library or type registry relspec dumps.
+      def self.dumped?(name)
+        name.match?(LIBRARY) || name.match?(REGISTRY)
+      end
+
+      # True when +name+ (a dumped one) is an oroGen type registry.
+      def self.registry?(name)
+        name.match?(REGISTRY)
       end
 
       # The dumps of the libraries in +debs+, written into +dir+ as
-      # <library>.abi.xml.gz, sorted by library; none when no .deb ships one.
+      # <library>.abi.xml.gz, then the oroGen type registries they ship
+      # (<typekit>.tlb.abi.xml.gz, the .tlb compressed as it is); none when
+      # no .deb ships either.
       def dump(debs, dir, log:)
         Dir.mktmpdir("relspec-abi") do |root|
           debs.sort.each { |deb| @run.call(["dpkg-deb", "-x", deb, root], log: log) }
@@ -54,8 +69,15 @@ module Relspec
             path = File.join(dir, "#{File.basename(library)}#{SUFFIX}")
             Dumper.compress(xml, path)
             Dump.new(library: File.basename(library), path: path).freeze
-          end
+          end + registries(root).map { |registry| keep(registry, dir) }
         end
+      end
+
+      # The type registries under +root+ (share/orogen/*.tlb of a prefix).
+      def registries(root)
+        Dir.glob(File.join(root, "**", REGISTRY_DIR, "*.tlb")).select do |path|
+          File.basename(path).match?(REGISTRY) && !File.symlink?(path) && File.file?(path)
+        end.sort_by { |path| [File.basename(path), path] }.uniq { |path| File.basename(path) }
       end
 
       # gzip without the file name and with time 0 in its header.
@@ -66,6 +88,13 @@ module Relspec
           File.open(from, "rb") { |input| IO.copy_stream(input, gzip) }
           gzip.finish
         end
+      end
+
+      def keep(registry, dir)
+        FileUtils.mkdir_p(dir)
+        path = File.join(dir, "#{File.basename(registry)}#{SUFFIX}")
+        Dumper.compress(registry, path)
+        Dump.new(library: File.basename(registry), path: path).freeze
       end
 
       # The shared libraries under +root+ outside the debug files, by name.

@@ -108,7 +108,7 @@ module Relspec
           @fields.fail_at(at, "#{@fields.describe(at)} must be a mapping") unless row.is_a?(Hash)
           @fields.known_keys(row, at, ENTRY_KEYS)
           library = @fields.text(row, at + ["library"])
-          @fields.fail_at(at + ["library"], "#{library.inspect} is not a shared library name") unless library.match?(Dumper::LIBRARY)
+          @fields.fail_at(at + ["library"], "#{library.inspect} is not a shared library or type registry name") unless Dumper.dumped?(library)
           file = @fields.plain_path(row, at + ["file"])
           @fields.fail_at(at + ["file"], "#{file.inspect} is not a dump of #{library}") unless Dumper.library_of(file) == library
           sha256 = @fields.text(row, at + ["sha256"])

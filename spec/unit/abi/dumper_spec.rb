@@ -32,11 +32,20 @@ RSpec.describe Relspec::Abi::Dumper do
     expect(described_class.new(nil).libraries(@dir)).to eq([library])
   end
 
+  it "finds the oroGen type registries a typekit package ships under share/orogen" do
+    registry = file("opt/rock/r/rock-r-base-orogen-std/share/orogen/std.tlb", "<typelib/>")
+    file("opt/rock/r/rock-r-base-orogen-std/share/orogen/std.typelist", "x")
+    file("opt/rock/r/rock-r-base-orogen-std/share/doc/other.tlb", "<typelib/>")
+    expect(described_class.new(nil).registries(@dir)).to eq([registry])
+  end
+
   it "names the library of a dump file, and nothing else" do
     expect(described_class.library_of("results/s/libbase-logging.so.abi.xml.gz")).to eq("libbase-logging.so")
     expect(described_class.library_of("results/s/libx.so.1.2.abi.xml.gz")).to eq("libx.so.1.2")
     expect(described_class.library_of("results/s/x_1_amd64.deb")).to be_nil
     expect(described_class.library_of("results/s/notalib.abi.xml.gz")).to be_nil
+    expect(described_class.library_of("results/s/std.tlb.abi.xml.gz")).to eq("std.tlb")
+    expect([described_class.registry?("std.tlb"), described_class.registry?("libstd.so")]).to eq([true, false])
   end
 
   it "compresses without a name or a time, so the same dump gives the same bytes" do

@@ -64,7 +64,7 @@ RSpec.describe Relspec::Abi::PublishedDumps do
 
   {
     "a path leaving the folder" => ["file: ../../etc/libx.so.abi.xml.gz", "is not a plain path"],
-    "a library name that is not one" => ["library: ../libx.so", "is not a shared library name"],
+    "a library name that is not one" => ["library: ../libx.so", "is not a shared library or type registry name"],
     "a file that is another library's dump" => ["file: s/liby.so.abi.xml.gz", "is not a dump of libx.so"],
     "a bad sha256" => ["sha256: abc", "sha256 must be 64 lowercase hex digits"],
     "an unknown key" => ["extra: 1", "unknown key \"extra\""]
