@@ -1,5 +1,6 @@
 # frozen_string_literal: true
 
+require "digest"
 require_relative "release_spec"
 require_relative "error"
 require_relative "target"
@@ -20,7 +21,19 @@ module Relspec
   # repository publishes. docs/abi.md.
   module Abi
     # One dump on this side of the comparison.
-    Side = Struct.new(:package, :library, :file, keyword_init: true)
+    Side = Struct.new(:package, :library, :file, :sha256, keyword_init: true) do
+      # The dump's bytes as recorded (build-results.yml or the index), else
+      # an error: a dump changed since it was made is not compared.
+      def verified
+        raise ToolError, "the ABI dump #{file} is missing" unless File.file?(file)
+
+        actual = Digest::SHA256.file(file).hexdigest
+        raise ToolError, "the ABI dump #{file} has changed since it was recorded (sha256 #{actual}, recorded #{sha256})" \
+          unless actual == sha256
+
+        file
+      end
+    end
 
     def self.run(path, out:, target: nil, against: nil)
       resolution = ReleaseSpec.resolve(path)
@@ -43,7 +56,8 @@ module Relspec
         return results.built.flat_map do |record|
           record.files.filter_map do |file|
             library = Dumper.library_of(file.name)
-            library && Side.new(package: record.package, library: library, file: File.join(tree.target_dir(target), file.name)).freeze
+            library && Side.new(package: record.package, library: library, file: File.join(tree.target_dir(target), file.name),
+                                sha256: file.sha256).freeze
           end
         end
       end
@@ -54,7 +68,7 @@ module Relspec
 
     def self.published(repository, target)
       PublishedDumps.read(repository, target).entries.map do |entry|
-        Side.new(package: entry.package, library: entry.library, file: entry.file).freeze
+        Side.new(package: entry.package, library: entry.library, file: entry.file, sha256: entry.sha256).freeze
       end
     end
 
@@ -76,7 +90,7 @@ module Relspec
         release, old = indexes.lazy.map do |name, dumps|
           [name, dumps.find { |dump| dump.package == side.package && dump.library == side.library }]
         end.find { |_, dump| dump }
-        verdict = old && Comparison.compare(old.file, side.file)
+        verdict = old && Comparison.compare(old.verified, side.verified)
         Report::Entry.new(package: side.package, library: side.library, against: release, verdict: verdict).freeze
       end
     end

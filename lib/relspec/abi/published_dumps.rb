@@ -66,7 +66,11 @@ module Relspec
                                                         file: relative, sha256: file.sha256).freeze
           end
         end
-        AtomicFile.update(File.join(dir, FILE_NAME), render(known.values))
+        index = File.join(dir, FILE_NAME)
+        # a repository of packages without libraries gets no abi/ folder
+        return false if known.empty? && !File.exist?(index)
+
+        AtomicFile.update(index, render(known.values))
       end
 
       def self.render(entries)

@@ -123,6 +123,30 @@ RSpec.describe "relspec abi on a real library", :tmpdir do
     expect(run!("diff", *locks, "--format", "json").stdout).not_to include('"abi"') # only when asked
   end
 
+  # Temporarily replaces +path+ with +content+ while the block runs.
+  def replaced(path, content)
+    saved = File.binread(path)
+    File.binwrite(path, content)
+    yield
+  ensure
+    File.binwrite(path, saved)
+  end
+
+  it "refuses a damaged published index with its file and line, and a dump changed since it was recorded" do
+    index = File.join(@root, "repos", "parent", "abi", "bookworm-amd64", "index.yml")
+    replaced(index, File.read(index).sub(/file: .*/, "file: ../../../etc/libx.so.abi.xml.gz")) do
+      run = relspec("abi", "specs/same.yml", "--out", "out", chdir: @root)
+      expect(run.status.exitstatus).to eq(1)
+      expect(run.stderr).to match(%r{index\.yml:\d+:\d+: error\[abi-index\]: cannot read the ABI index: dumps\.0\.file "\.\./\.\./\.\./etc/libx\.so\.abi\.xml\.gz" is not a plain path})
+      expect(run.stderr).not_to include("from /")
+    end
+    replaced(dump("same"), "not a dump") do
+      run = relspec("abi", "specs/same.yml", "--out", "out", chdir: @root)
+      expect(run.status.exitstatus).to eq(1)
+      expect(run.stderr).to include("libbase-logging.so.abi.xml.gz has changed since it was recorded")
+    end
+  end
+
   it "refuses an --against that is neither the release nor an ancestor, naming those" do
     run = relspec("abi", "specs/changed.yml", "--out", "out", "--against", "nightly", chdir: @root)
     expect(run.status.exitstatus).to eq(1)

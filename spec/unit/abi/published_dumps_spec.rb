@@ -58,6 +58,12 @@ RSpec.describe Relspec::Abi::PublishedDumps do
     expect(described_class.read(repo, target).entries.map(&:library)).to eq(%w[liba2.so libb.so.1])
   end
 
+  it "writes nothing for packages without dumps" do
+    records = [record("rock-r-data", "data", "results/rock-r-data/x_1_all.deb" => "deb")]
+    expect(described_class.write(File.join(@dir, "repo"), target, File.join(@dir, "out"), records)).to be(false)
+    expect(File.exist?(File.join(@dir, "repo", "abi"))).to be(false)
+  end
+
   it "is empty for a repository without dumps" do
     expect(described_class.read(File.join(@dir, "none"), target).entries).to eq([])
   end
