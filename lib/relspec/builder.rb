@@ -13,6 +13,7 @@ require_relative "builder/repositories"
 require_relative "builder/scheduler"
 require_relative "builder/tool"
 require_relative "builder/unlinked_path"
+require_relative "abi/dumper"
 require_relative "builder/host_backend"
 require_relative "builder/sbuild_backend"
 require_relative "builder/slurm/cluster"
@@ -153,7 +154,7 @@ module Relspec
                        request = request_for(plan, entry, target, repositories, local.synchronize { debs.dup }, dir)
                        files = backend.build(request)
                        local.synchronize { debs.concat(files.grep(/\.u?deb\z/)) }
-                       files
+                       files + abi_dumps(request, files)
                      end
                    end
         results.write(backend: backend.name) if outcomes.empty?
@@ -179,6 +180,13 @@ module Relspec
                          duration: started ? outcome.duration : nil, log: started ? "logs/#{entry.source}.log" : nil,
                          reason: outcome.reason&.gsub("#{dir}/", ""), files: files.freeze
                        ))
+      end
+
+      # The ABI dumps of the libraries the build's .debs ship, beside them
+      # (docs/abi.md); recorded with the produced files.
+      def abi_dumps(request, files)
+        run = ->(command, log:) { @tool.run(request.source, command, log: log) }
+        Abi::Dumper.new(run).dump(files.grep(/\.deb\z/), request.output_dir, log: request.log).map(&:path)
       end
 
       def debs_of(dir, record)

@@ -6,6 +6,7 @@ require_relative "diff/release_diff"
 require_relative "diff/text_renderer"
 require_relative "diff/markdown_renderer"
 require_relative "diff/json_renderer"
+require_relative "diff/abi_section"
 require_relative "project"
 require_relative "error"
 
@@ -48,11 +49,12 @@ module Relspec
     end
     private_class_method :snapshots, :base_pairs
 
-    # +diffs+ (ReleaseDiffs) in +format+; +color+ only for text.
-    def render(diffs, format, color: false)
+    # +diffs+ (ReleaseDiffs) in +format+; +color+ only for text. +abi+:
+    # release => Abi::Report (AbiSection) shown by markdown and json.
+    def render(diffs, format, color: false, abi: {})
       case format
-      when "markdown" then MarkdownRenderer.new.render(diffs)
-      when "json" then JsonRenderer.render(diffs)
+      when "markdown" then MarkdownRenderer.new.render(diffs) + abi.values.map { |report| "\n#{report.render('markdown')}" }.join
+      when "json" then JsonRenderer.render(diffs, abi: abi)
       else TextRenderer.new(color: color).render(diffs)
       end
     end

@@ -22,6 +22,7 @@ require_relative "publish/signing_key"
 require_relative "publish/locked_release"
 require_relative "publish/held_packages"
 require_relative "report"
+require_relative "abi/published_dumps"
 
 module Relspec
   # `relspec publish`: the built packages of a release into its reprepro
@@ -97,6 +98,7 @@ module Relspec
         stale_lock, recovered, targets = transaction(repository, waiting: waiting) do |dirs, recovered_now|
           include_targets(repository, dirs, config, results, uploads, export: recovered_now == :abandoned)
         end
+        write_abi_dumps(repository, results)
         written, missing = write_osdeps(locked, effective, repository)
         Result.new(release: effective.release, repository: repository, targets: targets, osdeps_written: written,
                    osdeps_missing: missing, stale_lock: stale_lock, recovered: recovered)
@@ -173,6 +175,14 @@ module Relspec
       config.files.map { |name, text| AtomicFile.update(File.join(dir, name), text) }.any?
     end
 
+    # The ABI dumps of the built libraries beside the apt repository
+    # (Abi::PublishedDumps), verified with the other files by Upload.
+    def self.write_abi_dumps(repository, results)
+      results.each do |target, read|
+        Abi::PublishedDumps.write(repository, target, File.dirname(read.path), read.built) if read
+      end
+    end
+
     # <repository>/osdeps/<release>-<arch>.yml of the locked decisions the
     # repository (read as it is now, after the includes) or the ancestors
     # really hold.
@@ -184,6 +194,7 @@ module Relspec
       written = Osdeps::Files.write_release(listing.targets, effective, File.join(repository, "osdeps"))
       [written.changed_count, listing.missing]
     end
-    private_class_method :transaction, :repository_path, :read_results, :include_targets, :write_config, :write_osdeps
+    private_class_method :transaction, :repository_path, :read_results, :include_targets, :write_config, :write_osdeps,
+                         :write_abi_dumps
   end
 end

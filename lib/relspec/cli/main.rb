@@ -151,6 +151,18 @@ module Relspec
         finish ReportCommand.new(path: path, out: options[:out], format: options[:format], out_io: $stdout).call
       end
 
+      desc "abi SPEC", "ABI verdict of each library the release builds, against the ancestors' dumps (docs/abi.md)"
+      option :out, type: :string, default: "build", desc: "Where relspec compile and build wrote"
+      option :target, type: :string, desc: "Only this target (codename/arch)"
+      option :against, type: :string, desc: "Compare with this release (an ancestor, or the release itself)"
+      option :format, enum: %w[text markdown json], default: "text", desc: "Output format"
+      option :fail_on, enum: %w[changed incompatible], desc: "Exit 1 when a library's verdict is this or worse"
+      def abi(path)
+        require_relative "abi_command"
+        finish AbiCommand.new(path: path, out: options[:out], target: options[:target], against: options[:against],
+                              format: options[:format], fail_on: options[:fail_on], out_io: $stdout).call
+      end
+
       desc "build SPEC", "Build the source packages compile wrote, in dependency order (sbuild or this host)"
       long_desc <<~TEXT
         Reads <out>/<release>/<codename>-<arch>/plan.yml of each target and builds its
@@ -231,6 +243,7 @@ module Relspec
       option :exit_code, type: :boolean, default: false, desc: "Exit 1 when something differs, 2 on an error"
       option :fail_on_rebuilds, type: :numeric, desc: "Exit 1 when more than this many packages are rebuilt"
       option :color, type: :boolean, desc: "Colour the text format (default: when writing to a terminal)"
+      option :abi_out, type: :string, desc: "With the builds there, show the rebuilt libraries' ABI verdicts (docs/abi.md)"
       option :timeout, type: :numeric, default: 10, desc: "HTTP timeout in seconds (specs are planned)"
       def diff(*paths)
         require_relative "diff_command"
@@ -240,7 +253,7 @@ module Relspec
           status = DiffCommand.new(paths: paths, base: options[:base], format: options[:format],
                                    exit_code: options[:exit_code], fail_on_rebuilds: options[:fail_on_rebuilds]&.to_i,
                                    timeout: options[:timeout], out: $stdout, err: $stderr,
-                                   color: options.fetch(:color) { $stdout.tty? }).call
+                                   color: options.fetch(:color) { $stdout.tty? }, abi_out: options[:abi_out]).call
         end
         # With --exit-code, 1 means "differences": an error must say 2.
         failed = DIFF_ERROR if failed.nonzero? && options[:exit_code]

@@ -11,9 +11,11 @@ module Relspec
 
       module_function
 
-      def render(diffs)
+      # +abi+: release => Abi::Report, under "abi" when there is one.
+      def render(diffs, abi: {})
         document = { FORMAT_KEY => FORMAT_VERSION, "changed" => diffs.any?(&:changed?),
                      "rebuilds" => diffs.sum(&:rebuilds), "releases" => diffs.map(&:to_h) }
+        document["abi"] = abi.transform_values { |report| report.to_h["targets"] } unless abi.empty?
         "#{JSON.pretty_generate(document)}\n"
       end
     end

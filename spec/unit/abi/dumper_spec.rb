@@ -1,0 +1,60 @@
+# frozen_string_literal: true
+
+require_relative "../unit_helper"
+require "tmpdir"
+require "fileutils"
+require "zlib"
+require "relspec/abi/dumper"
+
+RSpec.describe Relspec::Abi::Dumper do
+  around do |example|
+    Dir.mktmpdir("relspec-unit-dumper") do |dir|
+      @dir = dir
+      example.run
+    end
+  end
+
+  def file(path, content)
+    full = File.join(@dir, path)
+    FileUtils.mkdir_p(File.dirname(full))
+    File.binwrite(full, content)
+    full
+  end
+
+  it "finds the shared libraries a package ships: ELF files named lib*.so*, no links, no debug files" do
+    elf = "\x7FELF#{'x' * 20}".b
+    library = file("opt/rock/r/lib/libbase-logging.so.1.2", elf)
+    File.symlink(library, File.join(@dir, "opt/rock/r/lib/libbase-logging.so"))
+    file("opt/rock/r/lib/libfake.so", "INPUT(-lbase-logging)\n") # a linker script
+    file("opt/rock/r/lib/libbase-logging.a", elf)
+    file("usr/lib/debug/.build-id/ab/libshadow.so", elf)
+    file("opt/rock/r/lib/pkgconfig/libx.so.pc", elf)
+    expect(described_class.new(nil).libraries(@dir)).to eq([library])
+  end
+
+  it "finds the oroGen type registries a typekit package ships under share/orogen" do
+    registry = file("opt/rock/r/rock-r-base-orogen-std/share/orogen/std.tlb", "<typelib/>")
+    file("opt/rock/r/rock-r-base-orogen-std/share/orogen/std.typelist", "x")
+    file("opt/rock/r/rock-r-base-orogen-std/share/doc/other.tlb", "<typelib/>")
+    expect(described_class.new(nil).registries(@dir)).to eq([registry])
+  end
+
+  it "names the library of a dump file, and nothing else" do
+    expect(described_class.library_of("results/s/libbase-logging.so.abi.xml.gz")).to eq("libbase-logging.so")
+    expect(described_class.library_of("results/s/libx.so.1.2.abi.xml.gz")).to eq("libx.so.1.2")
+    expect(described_class.library_of("results/s/x_1_amd64.deb")).to be_nil
+    expect(described_class.library_of("results/s/notalib.abi.xml.gz")).to be_nil
+    expect(described_class.library_of("results/s/std.tlb.abi.xml.gz")).to eq("std.tlb")
+    expect([described_class.registry?("std.tlb"), described_class.registry?("libstd.so")]).to eq([true, false])
+  end
+
+  it "compresses without a name or a time, so the same dump gives the same bytes" do
+    xml = file("a.xml", "<abi-corpus/>\n")
+    described_class.compress(xml, File.join(@dir, "one.gz"))
+    File.utime(Time.at(0), Time.at(12_345), xml)
+    described_class.compress(xml, File.join(@dir, "two.gz"))
+    expect(File.binread(File.join(@dir, "one.gz"))).to eq(File.binread(File.join(@dir, "two.gz")))
+    expect(Zlib::GzipReader.open(File.join(@dir, "one.gz")) { |gzip| [gzip.mtime.to_i, gzip.orig_name, gzip.read] })
+      .to eq([0, nil, "<abi-corpus/>\n"])
+  end
+end
