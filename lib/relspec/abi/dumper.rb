@@ -62,15 +62,25 @@ module Relspec
       def dump(debs, dir, log:)
         Dir.mktmpdir("relspec-abi") do |root|
           debs.sort.each { |deb| @run.call(["dpkg-deb", "-x", deb, root], log: log) }
-          libraries(root).map do |library|
-            FileUtils.mkdir_p(dir)
-            xml = File.join(root, "#{File.basename(library)}.xml")
-            @run.call([*ABIDW, "--debug-info-dir", File.join(root, DEBUG_ROOT), "--out-file", xml, library], log: log)
-            path = File.join(dir, "#{File.basename(library)}#{SUFFIX}")
-            Dumper.compress(xml, path)
-            Dump.new(library: File.basename(library), path: path).freeze
-          end + registries(root).map { |registry| keep(registry, dir) }
+          libraries(root).filter_map { |library| library_dump(library, root, dir, log) } +
+            registries(root).map { |registry| keep(registry, dir) }
         end
+      end
+
+      # A dump is a by-product of the build: abidw failing on a library
+      # (a toolchain it does not read) leaves that library without a dump
+      # (`relspec abi` then says it has none), said in the build's log,
+      # and never fails a package that built.
+      def library_dump(library, root, dir, log)
+        FileUtils.mkdir_p(dir)
+        xml = File.join(root, "#{File.basename(library)}.xml")
+        @run.call([*ABIDW, "--debug-info-dir", File.join(root, DEBUG_ROOT), "--out-file", xml, library], log: log)
+        path = File.join(dir, "#{File.basename(library)}#{SUFFIX}")
+        Dumper.compress(xml, path)
+        Dump.new(library: File.basename(library), path: path).freeze
+      rescue ToolError => e
+        File.open(log, "a") { |file| file.puts("relspec: no ABI dump of #{File.basename(library)}: #{e.message}") }
+        nil
       end
 
       # The type registries under +root+ (share/orogen/*.tlb of a prefix).

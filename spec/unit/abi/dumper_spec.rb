@@ -39,6 +39,25 @@ RSpec.describe Relspec::Abi::Dumper do
     expect(described_class.new(nil).registries(@dir)).to eq([registry])
   end
 
+  it "leaves a library abidw cannot read without a dump, says so in the build log, and keeps the others" do
+    root = File.join(@dir, "root")
+    good = file("root/opt/rock/r/lib/libgood.so.1", "\x7FELF#{'x' * 20}".b)
+    bad = file("root/opt/rock/r/lib/libbad.so.1", "\x7FELF#{'y' * 20}".b)
+    log = file("build.log", "")
+    run = lambda do |command, log:|
+      raise Relspec::BuildError, "r: abidw failed (exit status 1)" if command.last == bad
+
+      File.write(command[command.index("--out-file") + 1], "<abi-corpus/>") if command.include?("--out-file")
+    end
+    dumper = described_class.new(run)
+    dumps = %w[libbad.so.1 libgood.so.1].filter_map do |name|
+      dumper.send(:library_dump, File.join(root, "opt/rock/r/lib", name), root, File.join(@dir, "out"), log)
+    end
+    expect(dumps.map(&:library)).to eq(["libgood.so.1"])
+    expect(File.read(log)).to eq("relspec: no ABI dump of libbad.so.1: r: abidw failed (exit status 1)\n")
+    expect(good).to end_with("libgood.so.1")
+  end
+
   it "names the library of a dump file, and nothing else" do
     expect(described_class.library_of("results/s/libbase-logging.so.abi.xml.gz")).to eq("libbase-logging.so")
     expect(described_class.library_of("results/s/libx.so.1.2.abi.xml.gz")).to eq("libx.so.1.2")
