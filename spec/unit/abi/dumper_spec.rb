@@ -44,7 +44,7 @@ RSpec.describe Relspec::Abi::Dumper do
     good = file("root/opt/rock/r/lib/libgood.so.1", "\x7FELF#{'x' * 20}".b)
     bad = file("root/opt/rock/r/lib/libbad.so.1", "\x7FELF#{'y' * 20}".b)
     log = file("build.log", "")
-    run = lambda do |command, log:|
+    run = lambda do |command, **|
       raise Relspec::BuildError, "r: abidw failed (exit status 1)" if command.last == bad
 
       File.write(command[command.index("--out-file") + 1], "<abi-corpus/>") if command.include?("--out-file")
