@@ -15,10 +15,11 @@ module Relspec
     # stored InRelease gives for the uncompressed index.
     class HostLists
       APT_HELPER = "/usr/lib/apt/apt-helper"
-      FORMAT = "$(RELEASE)\t$(COMPONENT)\t$(ARCHITECTURE)\t$(METAKEY)\t$(FILENAME)"
+      FORMAT = "$(RELEASE)\t$(COMPONENT)\t$(ARCHITECTURE)\t$(METAKEY)\t$(FILENAME)\t$(REPO_URI)"
 
-      # One downloaded Packages index.
-      Target = Struct.new(:suite, :component, :arch, :meta_key, :filename)
+      # One downloaded Packages index; +repo_uri+: the archive's base URL,
+      # where the index's Filename fields are found.
+      Target = Struct.new(:suite, :component, :arch, :meta_key, :filename, :repo_uri)
 
       def url
         "this machine's apt lists"
@@ -31,15 +32,7 @@ module Relspec
       end
 
       def packages_text(codename, arch, component: "main")
-        target = target_for(codename, arch, component)
-        text = read_index(target.filename)
-        checksum = release_of(target).checksum(target.meta_key)
-        raise Repository::Error, "#{target.filename}: its InRelease lists no #{target.meta_key}" unless checksum
-        unless text.bytesize == checksum.size && Digest::SHA256.hexdigest(text) == checksum.sha256
-          raise Repository::Error, "#{target.filename} does not match the SHA256 of its InRelease: run apt-get update"
-        end
-
-        text
+        verified_text(target_for(codename, arch, component))
       end
 
       def index_digest(codename, arch, component: "main")
@@ -50,7 +43,41 @@ module Relspec
         checksum.sha256
       end
 
+      # The indices of +codename+ and of its point-release suites
+      # (codename-updates, codename-security) that apt has for +arch+, each
+      # as [Target, verified text]: what a machine of that distribution
+      # installs from. Only a distribution's archive says who made it
+      # (Origin: Debian, Ubuntu): a repository of releases served under the
+      # same codename (relspec's, reprepro's by default) has no Origin and
+      # is not the distribution; nor is a source apt never fetched.
+      def suite_indices(codename, arch, component: "main")
+        suites = [codename, "#{codename}-updates", "#{codename}-security"]
+        found = targets.select do |target|
+          suites.include?(target.suite) && target.arch == arch && target.component == component &&
+            distribution?(target)
+        end
+        target_for(codename, arch, component) if found.empty? # says what is missing, as for packages
+        found.map { |target| [target, verified_text(target)] }
+      end
+
       private
+
+      def distribution?(target)
+        !release_of(target).origin.to_s.strip.empty?
+      rescue Repository::Error
+        false
+      end
+
+      def verified_text(target)
+        text = read_index(target.filename)
+        checksum = release_of(target).checksum(target.meta_key)
+        raise Repository::Error, "#{target.filename}: its InRelease lists no #{target.meta_key}" unless checksum
+        unless text.bytesize == checksum.size && Digest::SHA256.hexdigest(text) == checksum.sha256
+          raise Repository::Error, "#{target.filename} does not match the SHA256 of its InRelease: run apt-get update"
+        end
+
+        text
+      end
 
       def target_for(codename, arch, component)
         found = targets.find { |t| t.suite == codename && t.arch == arch && t.component == component }
@@ -62,8 +89,10 @@ module Relspec
 
       def targets
         @targets ||= run("apt-get", "indextargets", "--format", FORMAT, "Identifier: Packages").lines.filter_map do |line|
-          suite, component, arch, meta_key, filename = line.chomp.split("\t")
-          filename && File.file?(filename) ? Target.new(suite, component, arch, meta_key, filename).freeze : nil
+          suite, component, arch, meta_key, filename, repo_uri = line.chomp.split("\t")
+          next unless filename && File.file?(filename)
+
+          Target.new(suite, component, arch, meta_key, filename, repo_uri.to_s.chomp("/")).freeze
         end
       end
 

@@ -12,7 +12,7 @@ module Relspec
     class ReleaseFile
       Checksum = Struct.new(:sha256, :size)
 
-      attr_reader :codename, :suite, :architectures, :components, :checksums, :sha256, :valid_until
+      attr_reader :codename, :suite, :origin, :architectures, :components, :checksums, :sha256, :valid_until
 
       # +text+: the (verified, unarmored) Release text; +raw+: the bytes as
       # fetched (InRelease or Release), whose digest identifies what was read.
@@ -26,6 +26,7 @@ module Relspec
       def initialize(fields, sha256)
         @codename = fields["Codename"] || fields["Suite"]
         @suite = fields["Suite"]
+        @origin = fields["Origin"]
         @valid_until = parse_time(fields["Valid-Until"])
         @architectures = fields.fetch("Architectures", "").split
         @components = fields.fetch("Components", "").split

@@ -195,6 +195,18 @@ module Relspec
                                 engine: options[:engine], slurm: options[:slurm] || [], err_io: $stderr).call
       end
 
+      desc "mirror SPEC --out DIR | mirror verify DIR",
+           "A field mirror of a release and all it needs, proven complete offline (docs/mirror.md)"
+      option :out, type: :string, desc: "The mirror's folder"
+      option :target, type: :string, repeatable: true, desc: "Only this target (codename/arch); repeatable"
+      option :format, enum: %w[text json], default: "text", desc: "Output format"
+      option :install, type: :boolean, default: true, desc: "Run the dynamic proof (install from the mirror)"
+      option :timeout, type: :numeric, default: 10, desc: "HTTP timeout in seconds"
+      def mirror(*args)
+        require_relative "mirror_command"
+        finish MirrorCommand.new(args: args, options: options, out_io: $stdout, err_io: $stderr).call
+      end
+
       desc "check SPEC", "Check that the OS dependencies of the release exist on every target"
       long_desc <<~TEXT
         Every Build-Depends and Depends relation relspec writes for the packages the

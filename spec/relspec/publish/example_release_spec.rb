@@ -13,8 +13,9 @@ require_relative "../../support/headless_chromium"
 # configuration with both repositories and this machine's archive), and an
 # installed demo-child package finds its inherited demo-base dependency
 # through env.sh. The specs are the project's own, in a copy of the project.
-# Then base/types is broken in the copy and demo-child built again: its
-# status page, read by a real browser with the network cut.
+# Then the field mirror of demo-child is made and proven; last, base/types is
+# broken in the copy and demo-child built again: its status page, read by a
+# real browser with the network cut.
 RSpec.describe "the example releases, built and published on bookworm", order: :defined do
   def target_name
     "bookworm/amd64"
@@ -100,6 +101,41 @@ RSpec.describe "the example releases, built and published on bookworm", order: :
     expect(status).to be_success, output
     expect(output.strip.split(":")).to include(driver, "/opt/rock/demo-base/rock-demo-base-base-logging",
                                                "/opt/rock/demo-child/rock-demo-child-base-types")
+  end
+
+  # The field mirror of demo-child (issue 35), made from the two
+  # repositories the example above published and this machine's Debian
+  # archive: its proofs pass (dose-debcheck; a clean system installed from
+  # the mirror alone, no network, with all seven packages), a second run
+  # changes nothing, and a .deb removed from the mirror is named by
+  # `relspec mirror verify` with the packages that need it.
+  it "mirrors demo-child with everything it needs, proven complete offline" do
+    # the example above published both releases (order: :defined)
+    expect(File).to be_directory(File.join(repository("demo-child"), "dists"))
+
+    mirror = File.join(@dir, "mirror")
+    run = relspec("mirror", "specs/demo-child.yml", "--out", mirror, "--format", "json", "--quiet", chdir: @dir)
+    expect(run.exit_code).to eq(0), run.stdout + run.stderr
+    report = JSON.parse(run.stdout).fetch("targets").fetch("bookworm/amd64")
+    expect(report.fetch("checks").transform_values { |check| check["status"] })
+      .to eq("static" => "passed", "dynamic" => "passed")
+    expect(report.fetch("packages")).to include("release" => 7, "inherited" => 4)
+    expect(report.fetch("missing")).to eq([])
+    expect(File.read(File.join(mirror, "VERIFIED.md"))).to include("## bookworm/amd64: complete")
+    # the minimal system is in it: apt itself and the Essential packages
+    packages = File.read(File.join(mirror, "dists", "bookworm", "main", "binary-amd64", "Packages"))
+    expect(packages).to match(/^Package: apt$/).and match(/^Package: dpkg$/).and match(/^Package: rock-demo-base-base-logging$/)
+
+    again = relspec("mirror", "specs/demo-child.yml", "--out", mirror, "--no-install", "--quiet", chdir: @dir)
+    expect(again.exit_code).to eq(0), again.stderr
+    expect(again.stdout).to include("changes: 0 added (0.0 MB), 0 removed, #{report['packages']['total']} kept")
+
+    logging = Dir.glob(File.join(mirror, "pool", "**", "rock-demo-base-base-logging_*.deb")).first
+    FileUtils.mv(logging, "#{logging}.away")
+    verify = relspec("mirror", "verify", mirror, "--no-install", chdir: @dir)
+    expect(verify.exit_code).to eq(1)
+    expect(verify.stdout).to match(%r{missing: pool/\S+/rock-demo-base-base-logging_\S+\.deb \(rock-demo-base-base-logging \S+\) is missing \(needed by [^)]*rock-demo-child-drivers-iodrivers-base})
+    expect(verify.stdout).to include("NOT complete")
   end
 
   # base/types's tag v2.0.0 (demo-child's pin) moved to a commit whose CMake

@@ -1,0 +1,188 @@
+# frozen_string_literal: true
+
+require "fileutils"
+require "open3"
+require "yaml"
+require_relative "release_spec"
+require_relative "target"
+require_relative "atomic_file"
+require_relative "apt/cache"
+require_relative "mirror/binary_index"
+require_relative "mirror/closure"
+require_relative "mirror/sources"
+require_relative "mirror/apt_repository"
+require_relative "mirror/download"
+require_relative "mirror/proof"
+require_relative "mirror/report"
+
+module Relspec
+  # `relspec mirror SPEC --out DIR`: a field mirror of a release. Everything
+  # a machine needs to install the release with no network: the release's
+  # packages, its ancestors' that it inherits, their whole runtime closure
+  # from the distribution and the distribution's minimal system, as one
+  # reprepro repository, with the proof that it is complete (static and
+  # dynamic, Mirror::Proof) written beside it. Running it again updates the
+  # mirror: adds what is new, drops what nothing needs any more.
+  # `relspec mirror verify DIR` checks a mirror again, offline.
+  module Mirror
+    MANIFEST = "mirror.yml"
+    VERIFIED = "VERIFIED.md"
+    INCOMING = ".relspec-incoming"
+
+    # A folder given to `relspec mirror verify` is not a mirror relspec made.
+    class NotAMirror < RepositoryError; end
+
+    # +targets+: "codename/arch" strings (empty: every target of the spec);
+    # +progress+: an IO for one line per step, or nil.
+    def self.run(path, out:, targets: [], timeout: 10, progress: nil, install: true)
+      resolution = ReleaseSpec.resolve(path)
+      effective = resolution.effective
+      all = Target.all(effective)
+      selected = Target.select(targets.empty? ? nil : targets, all, effective.release)
+      sign_with = effective.repository&.sign_with
+      repository = AptRepository.new(out, targets: selected, sign_with: sign_with)
+      repository.configure
+      sources = Sources.new(resolution, timeout: timeout, cache: Apt::Cache.new(Apt::Cache.default_dir))
+      key = sign_with && export_key(sign_with, repository.dir, effective.release)
+      made = selected.map { |target| fill(repository, sources.read(target), target, progress) }
+      repository.export
+      manifest = made.to_h { |target, seeds, _| [target.to_s, { "release" => seeds }] }
+      reports = made.map do |target, seeds, report|
+        prove(repository, target, seeds, key, install: install).then do |checks|
+          Report::TargetReport.new(**report.to_h, checks: checks)
+        end
+      end
+      write(repository, effective.release, manifest, key, Report.new(effective.release, reports))
+    end
+
+    # Checks the mirror in +dir+ again from its own files: every file its
+    # indices list is there with the listed size and SHA256, and both
+    # proofs pass.
+    def self.verify(dir, install: true)
+      manifest = read_manifest(dir)
+      targets = manifest.fetch("targets").keys.map { |name| Target.parse(name) }
+      targets.each do |target|
+        next if [target.codename, target.arch].all? { |part| part.match?(/\A[a-z0-9][a-z0-9.-]*\z/) }
+
+        raise NotAMirror, "#{File.join(dir, MANIFEST)}: #{target} is not a target name"
+      end
+      repository = AptRepository.new(dir, targets: targets)
+      key = manifest["key"] && File.join(repository.dir, manifest["key"])
+      reports = targets.map do |target|
+        index = repository.index(target)
+        seeds = manifest.dig("targets", target.to_s, "release")
+        counts = { "total" => index.names.size, "release" => seeds.size,
+                   "required" => index.binaries.count(&:required?), "bytes" => index.binaries.sum(&:size) }
+        Report::TargetReport.new(target: target, counts: counts, changes: nil, missing: missing_files(repository, index),
+                                 checks: prove(repository, target, seeds, key, install: install))
+      end
+      Report.new(manifest.fetch("release"), reports)
+    end
+
+    def self.fill(repository, read, target, progress)
+      closure = Closure.of(read.index, read.seeds)
+      closure.add(read.required, "the minimal #{target.codename} system")
+      wanted = closure.binaries.values
+      current = repository.index(target)
+      add = wanted.reject { |binary| (held = current[binary.name]) && held.sha256 == binary.sha256 }
+                  .sort_by(&:name)
+      remove = (current.names - closure.names).sort
+      download = Download.new(File.join(repository.dir, INCOMING))
+      files = download.fetch(add, progress: progress && lambda { |done, total, binary|
+        progress.puts("relspec: #{target}: [#{done}/#{total}] #{binary}")
+      })
+      repository.include(target, files)
+      repository.remove(target, remove)
+      download.clean
+      counts = counts(closure, read)
+      changes = { "added" => add.size, "added_bytes" => add.sum(&:size), "removed" => remove.size,
+                  "kept" => wanted.size - add.size }
+      missing = closure.missing.map(&:to_s).sort
+      [target, read.seeds.select { |name| closure.binaries.key?(name) }.sort,
+       Report::TargetReport.new(target: target, counts: counts, changes: changes, missing: missing, checks: [])]
+    end
+
+    def self.counts(closure, read)
+      binaries = closure.binaries.values
+      { "total" => binaries.size, "release" => read.seeds.count { |name| closure.binaries.key?(name) },
+        "inherited" => binaries.count { |binary| read.ancestors.include?(binary.origin.label) },
+        "distribution" => binaries.count { |binary| binary.origin.distribution },
+        "required" => read.required.size, "bytes" => binaries.sum(&:size) }
+    end
+
+    def self.prove(repository, target, seeds, key, install:)
+      proof = Proof.new(repository)
+      checks = [proof.static(target)]
+      checks << if install
+                  proof.dynamic(target, seeds, sign_key: key, arch_runs: runs?(target.arch))
+                else
+                  Proof::Check.new(name: "dynamic", status: "skipped", problems: [],
+                                   detail: "--no-install: not installed").freeze
+                end
+      checks
+    end
+
+    # This machine's own architecture, or one binfmt runs under qemu.
+    def self.runs?(arch)
+      native, = Open3.capture2("dpkg", "--print-architecture")
+      return true if native.strip == arch
+
+      qemu = { "arm64" => "aarch64", "armhf" => "arm", "i386" => "i386" }.fetch(arch, arch)
+      File.exist?("/proc/sys/fs/binfmt_misc/qemu-#{qemu}")
+    end
+
+    # Files the mirror's indices list that are absent or not what the
+    # index says, each with the packages of the mirror that need it.
+    def self.missing_files(repository, index)
+      index.binaries.sort_by(&:name).filter_map do |binary|
+        path = repository.pool_file(binary)
+        next if File.file?(path) && File.size(path) == binary.size && Digest::SHA256.file(path).hexdigest == binary.sha256
+
+        needers = index.binaries.select do |other|
+          other.depends.any? { |group| group.any? { |relation| relation.name == binary.name } }
+        end.map(&:name).sort
+        "#{binary.filename} (#{binary}) is #{File.exist?(path) ? 'damaged' : 'missing'}" \
+          "#{" (needed by #{needers.join(', ')})" unless needers.empty?}"
+      end
+    end
+
+    def self.read_manifest(dir)
+      path = File.join(dir, MANIFEST)
+      data = YAML.safe_load_file(path)
+      unless data.is_a?(Hash) && data["release"].is_a?(String) && data["targets"].is_a?(Hash) &&
+             data["targets"].values.all? { |entry| entry.is_a?(Hash) && entry["release"].is_a?(Array) }
+        raise NotAMirror, "#{path} is not the mirror.yml of a mirror made by relspec mirror"
+      end
+
+      data
+    rescue Errno::ENOENT
+      raise NotAMirror, "#{dir} is not a mirror: it has no #{MANIFEST} (make one with relspec mirror SPEC --out #{dir})"
+    rescue Psych::Exception => e
+      raise NotAMirror, "#{path}: not YAML (#{e.message})"
+    end
+
+    def self.export_key(key_id, dir, release)
+      armored, status = Open3.capture2("gpg", "--batch", "--armor", "--export", key_id)
+      raise ToolError, "gpg cannot export the key #{key_id} (repository.sign_with)" unless status.success? && !armored.empty?
+
+      name = "#{release}-mirror.asc"
+      AtomicFile.write(File.join(dir, name), armored)
+      File.join(dir, name)
+    end
+
+    def self.write(repository, release, manifest, key, report)
+      dir = repository.dir
+      data = { "release" => release, "key" => key && File.basename(key), "targets" => manifest.sort.to_h }
+      AtomicFile.write(File.join(dir, MANIFEST), YAML.dump(data.compact))
+      AtomicFile.write(File.join(dir, VERIFIED), report.markdown)
+      codenames = manifest.keys.map { |name| name.split("/").first }.uniq.sort
+      options = key ? "signed-by=/etc/apt/keyrings/#{File.basename(key)}" : "trusted=yes"
+      AtomicFile.write(File.join(dir, "#{release}-mirror.list"),
+                       codenames.map { |codename| "deb [#{options}] file://#{dir} #{codename} main\n" }.join)
+      AtomicFile.write(File.join(dir, "#{release}-mirror.sources"),
+                       "Types: deb\nURIs: file://#{dir}\nSuites: #{codenames.join(' ')}\nComponents: main\n" \
+                       "#{key ? "Signed-By: /etc/apt/keyrings/#{File.basename(key)}" : 'Trusted: yes'}\n")
+      report
+    end
+  end
+end

@@ -1,0 +1,89 @@
+# frozen_string_literal: true
+
+require "digest"
+require "fileutils"
+require "open3"
+require_relative "../atomic_file"
+require_relative "../error"
+require_relative "binary_index"
+
+module Relspec
+  module Mirror
+    # The mirror's own apt repository, made and changed with reprepro: one
+    # distribution per codename with the mirrored architectures; packages
+    # go in and out by name, the pool only through reprepro. The mirror's
+    # folder holds nothing else of relspec's but mirror.yml, VERIFIED.md,
+    # the sources snippets and the public key.
+    class AptRepository
+      attr_reader :dir
+
+      # +targets+: every Target the mirror holds; +sign_with+: a gpg key id.
+      def initialize(dir, targets:, sign_with: nil)
+        @dir = File.expand_path(dir)
+        @targets = targets
+        @sign_with = sign_with
+      end
+
+      def configure
+        conf = File.join(@dir, "conf")
+        FileUtils.mkdir_p(conf)
+        AtomicFile.write(File.join(conf, "distributions"), distributions)
+        AtomicFile.write(File.join(conf, "options"), "waitforlock 30\n")
+      end
+
+      def index_path(target)
+        File.join(@dir, "dists", target.codename, "main", "binary-#{target.arch}", "Packages")
+      end
+
+      # What the mirror holds for +target+ now (an empty index before the
+      # first run): a BinaryIndex whose origin is the mirror itself.
+      def index(target)
+        path = index_path(target)
+        index = BinaryIndex.new
+        return index unless File.file?(path)
+
+        index.add(File.read(path), origin: Origin.new(label: "mirror", fetcher: nil, distribution: false), where: path)
+      end
+
+      # reprepro includedeb of +files+ into +target+'s distribution.
+      def include(target, files)
+        files.each_slice(200) { |slice| reprepro("-A", target.arch, "includedeb", target.codename, *slice) }
+      end
+
+      def remove(target, names)
+        names.each_slice(200) { |slice| reprepro("-A", target.arch, "remove", target.codename, *slice) }
+      end
+
+      def export
+        reprepro("export")
+        reprepro("--delete", "clearvanished") if File.directory?(File.join(@dir, "db"))
+      end
+
+      # The pool file of +binary+ as the mirror's index names it.
+      def pool_file(binary)
+        File.join(@dir, binary.filename)
+      end
+
+      private
+
+      def distributions
+        @targets.group_by(&:codename).sort.map do |codename, targets|
+          lines = ["Codename: #{codename}", "Suite: #{codename}", "Label: relspec mirror",
+                   "Architectures: #{targets.map(&:arch).uniq.sort.join(' ')}", "Components: main",
+                   "Description: field mirror of a release and what it needs from #{codename}"]
+          lines << "SignWith: #{@sign_with}" if @sign_with
+          "#{lines.join("\n")}\n"
+        end.join("\n")
+      end
+
+      def reprepro(*args)
+        output, status = Open3.capture2e("reprepro", "--silent", "-b", @dir, *args)
+        return output if status.success?
+
+        raise ToolError, "reprepro #{args.first(4).join(' ')} in #{@dir} failed: #{output.strip.lines.last(3).join.strip}"
+      rescue SystemCallError => e
+        raise ToolError, "cannot run reprepro: #{e.message} (apt-get install reprepro)"
+      end
+    end
+  end
+end

@@ -1,0 +1,99 @@
+# frozen_string_literal: true
+
+require "json"
+
+module Relspec
+  module Mirror
+    # What `relspec mirror` and `relspec mirror verify` found, per target:
+    # rendered as text for the terminal, as VERIFIED.md beside the mirror
+    # and as JSON. Only facts of the mirror go in (no times, no paths of the
+    # machine that made it): the same mirror gives the same bytes.
+    class Report
+      # +counts+: Hash of what the closure holds; +changes+: added/removed
+      # (nil for verify); +missing+: lines; +checks+: Proof::Check.
+      TargetReport = Struct.new(:target, :counts, :changes, :missing, :checks, keyword_init: true) do
+        def complete?
+          missing.empty? && checks.none? { |check| check.status == "failed" } &&
+            checks.any? { |check| check.name == "static" && check.passed? }
+        end
+      end
+
+      attr_reader :release, :targets
+
+      def initialize(release, targets)
+        @release = release
+        @targets = targets.freeze
+        freeze
+      end
+
+      def complete?
+        targets.all?(&:complete?)
+      end
+
+      def to_h
+        { "release" => release, "complete" => complete?,
+          "targets" => targets.to_h do |one|
+            [one.target.to_s, { "complete" => one.complete?, "packages" => one.counts, "changes" => one.changes,
+                                "missing" => one.missing,
+                                "checks" => one.checks.to_h do |check|
+                                  [check.name, { "status" => check.status, "detail" => check.detail,
+                                                 "problems" => check.problems }]
+                                end }]
+          end }
+      end
+
+      def json
+        "#{JSON.pretty_generate(to_h)}\n"
+      end
+
+      def text
+        lines = targets.flat_map do |one|
+          head = ["#{one.target}: #{one.complete? ? 'complete' : 'NOT complete'} — #{summary(one.counts)}"]
+          head << "  changes: #{change_text(one.changes)}" if one.changes
+          head + one.missing.map { |line| "  missing: #{line}" } +
+            one.checks.flat_map do |check|
+              ["  #{check.name} proof: #{check.status} (#{check.detail})", *check.problems.map { |line| "    #{line}" }]
+            end
+        end
+        "#{lines.join("\n")}\n"
+      end
+
+      def markdown
+        body = targets.map do |one|
+          checks = one.checks.map do |check|
+            "- #{check.name} proof: **#{check.status}** (#{check.detail})" +
+              check.problems.map { |line| "\n  - #{line}" }.join
+          end
+          missing = one.missing.map { |line| "- missing: #{line}" }
+          ["## #{one.target}: #{one.complete? ? 'complete' : 'NOT complete'}", "", "#{summary(one.counts)}.", "",
+           *missing, *checks].join("\n")
+        end
+        "# Mirror of #{release}\n\nMade and checked by `relspec mirror`; `relspec mirror verify DIR` checks it " \
+          "again offline (docs/mirror.md).\n\n#{body.join("\n\n")}\n"
+      end
+
+      private
+
+      # "351 packages (7 of the release, 4 of them inherited; 344 from the
+      # distribution, 33 of them its minimal system), 252.5 MB": the parts
+      # that +counts+ has (verify knows no origins).
+      def summary(counts)
+        release = "#{counts['release']} of the release"
+        release += ", #{counts['inherited']} of them inherited from its ancestors" if counts["inherited"]
+        parts = [release]
+        parts << "#{counts['distribution']} from the distribution" if counts["distribution"]
+        parts << "#{counts['required']} for the minimal system"
+        "#{counts['total']} packages (#{parts.join('; ')}), #{megabytes(counts['bytes'])}"
+      end
+
+      def change_text(changes)
+        "#{changes['added']} added (#{megabytes(changes['added_bytes'])}), #{changes['removed']} removed, " \
+          "#{changes['kept']} kept"
+      end
+
+      def megabytes(bytes)
+        format("%.1f MB", bytes.to_i / 1_000_000.0)
+      end
+    end
+  end
+end
