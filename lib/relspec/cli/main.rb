@@ -6,6 +6,7 @@ require_relative "strict_commands"
 require_relative "../version"
 require_relative "catalog_commands"
 require_relative "osdeps_commands"
+require_relative "help"
 
 module Relspec
   module CLI
@@ -44,11 +45,7 @@ module Relspec
       end
 
       desc "validate [SPEC...]", "Check release specs and their ancestors (default: every spec in specs/)"
-      long_desc <<~TEXT
-        Reads each spec and all of its ancestors and reports every problem found,
-        with file:line:column, the rule that failed and a hint. Works offline and
-        writes nothing. Exits 1 if any error was found; warnings alone exit 0.
-      TEXT
+      long_desc Help::VALIDATE
       option :format, enum: %w[text json], default: "text", desc: "Output format"
       def validate(*paths)
         require_relative "validate_command"
@@ -56,12 +53,7 @@ module Relspec
       end
 
       desc "show SPEC", "Print the effective spec of a release after inheritance"
-      long_desc <<~TEXT
-        Prints the release's own values merged with what it inherits from its
-        parents (see docs/spec-reference.md). With --origins, each value is
-        annotated with the file and line it comes from ("default" for built-in
-        defaults).
-      TEXT
+      long_desc Help::SHOW
       option :origins, type: :boolean, default: false, desc: "Annotate each value with where it was written"
       option :format, enum: %w[yaml json], default: "yaml", desc: "Output format"
       def show(path)
@@ -71,12 +63,7 @@ module Relspec
       end
 
       desc "plan SPEC | --check [SPEC...]", "Decide per target what the release inherits, builds or has published, and why"
-      long_desc <<~TEXT
-        Reads the spec hierarchy, the workspace (or catalog snapshot) and what the
-        ancestors' apt repositories hold, and prints per target how many packages
-        are inherited, built and already published, then every build with its cause
-        chain. --write records the plan in releases/<release>/lock.yml.
-      TEXT
+      long_desc Help::PLAN
       option :write, type: :boolean, default: false, desc: "Write releases/<release>/lock.yml"
       option :format, enum: %w[text json markdown], default: "text", desc: "Output format"
       option :target, type: :string, desc: "Only this target (codename/arch)"
@@ -99,15 +86,7 @@ module Relspec
       end
 
       desc "compile SPEC", "Emit the Debian source packages the release must build, plan.yml, lock and osdeps"
-      long_desc <<~TEXT
-        Plans the release, then writes one Debian source package (.orig.tar.gz,
-        .debian.tar.xz, .dsc) per build decision into
-        <out>/<release>/<codename>-<arch>/<source>/, plan.yml per target (the builds
-        in dependency order), releases/<release>/lock.yml and the osdeps files. A
-        compile with nothing changed writes nothing. First, the OS dependencies are
-        checked as `relspec check` does (apt archives; Launchpad answers from its
-        cache only): a release with missing ones is refused unless --no-check.
-      TEXT
+      long_desc Help::COMPILE
       option :out, type: :string, default: "build", desc: "Where the source packages go"
       option :jobs, type: :numeric, default: 2, desc: "Packages emitted in parallel"
       option :timeout, type: :numeric, default: 10, desc: "HTTP timeout in seconds"
@@ -123,17 +102,7 @@ module Relspec
       end
 
       desc "publish SPEC", "Put what relspec build built into the release's reprepro repository"
-      long_desc <<~TEXT
-        Reads <out>/<release>/<codename>-<arch>/build-results.yml of each target and
-        includes every built package (its .dsc and .debs) into the repository at the
-        spec's repository.path, whose conf/distributions and conf/options it writes
-        from the spec's targets (signed with repository.sign_with when set). Failed
-        and skipped packages are never published; a file whose name the repository
-        already holds with other bytes stops the publication before anything is
-        included. Then writes <repository>/osdeps/<release>-<arch>.yml from what the
-        repository really holds. Publishing the same results again changes nothing.
-        See docs/publish.md.
-      TEXT
+      long_desc Help::PUBLISH
       option :out, type: :string, default: "build", desc: "Where relspec compile and build wrote"
       option :target, type: :string, desc: "Only this target (codename/arch)"
       option :timeout, type: :numeric, default: 10, desc: "HTTP timeout in seconds"
@@ -164,13 +133,7 @@ module Relspec
       end
 
       desc "build SPEC", "Build the source packages compile wrote, in dependency order (sbuild or this host)"
-      long_desc <<~TEXT
-        Reads <out>/<release>/<codename>-<arch>/plan.yml of each target and builds its
-        source packages, a package as soon as its build-dependencies are built, up to
-        --jobs at once. Results (status, version, duration, log, files with SHA256) go
-        to build-results.yml in the target folder after every package; a killed run is
-        resumed by the next one. See docs/build.md.
-      TEXT
+      long_desc Help::BUILD
       option :out, type: :string, default: "build", desc: "Where compile wrote the source packages"
       option :backend, enum: %w[sbuild host], default: "sbuild", desc: "sbuild (clean chroot) or host (this machine)"
       option :jobs, type: :numeric, default: 1, desc: "Packages built at once"
@@ -208,16 +171,7 @@ module Relspec
       end
 
       desc "check SPEC", "Check that the OS dependencies of the release exist on every target"
-      long_desc <<~TEXT
-        Every Build-Depends and Depends relation relspec writes for the packages the
-        release builds must resolve on each target (by name, through Provides, or as an
-        Architecture: all package). Sources: the distribution's apt archive
-        (distributions.<codename>.archive; host: true for this machine's apt lists) or
-        Launchpad for Ubuntu targets (auto: the archive where one is configured).
-        Prints what is missing, with the packages that need it and a similar name that
-        exists. Exits 1 when something is missing or a source could not answer.
-        See docs/check.md.
-      TEXT
+      long_desc Help::CHECK
       option :target, type: :string, desc: "Only this target (codename/arch)"
       option :source, enum: %w[auto apt launchpad], default: "auto", desc: "Where availability is read"
       option :format, enum: %w[text json markdown], default: "text", desc: "Output format"
@@ -241,15 +195,7 @@ module Relspec
       end
 
       desc "diff OLD NEW | --base REF [SPEC...]", "What a change does to each release: per target, what is added, removed, rebuilt, and why"
-      long_desc <<~TEXT
-        OLD and NEW are lock files, release folders (releases/<release>/) or specs (a
-        spec is planned first). With --base REF, every release of specs/ (or those of
-        the specs given) as committed at REF is compared with the working tree; REF is
-        read with git, the working tree is not touched. Prints nothing when nothing
-        differs. --exit-code: exit 0 without differences, 1 with, 2 on an error.
-        --fail-on-rebuilds N: exit 1 when more than N packages are rebuilt.
-        See docs/diff.md (the JSON schema) and docs/ci.md.
-      TEXT
+      long_desc Help::DIFF
       option :base, type: :string, desc: "Compare the working tree against this git ref (e.g. origin/main)"
       option :format, enum: %w[text markdown json], default: "text", desc: "Output format"
       option :exit_code, type: :boolean, default: false, desc: "Exit 1 when something differs, 2 on an error"
