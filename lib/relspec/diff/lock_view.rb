@@ -21,7 +21,7 @@ module Relspec
       def snapshot(lock, source:)
         Snapshot.new(release: lock.release, source: source, spec_digest: lock.spec_digest,
                      ancestors: lock.ancestors.transform_values { |codenames| codenames.dup.freeze }.freeze,
-                     packages: lock.packages.transform_values { |record| source_of(record) }.freeze,
+                     packages: lock.packages,
                      targets: lock.targets.transform_values { |entries| decisions(entries) }.freeze,
                      spec: nil).freeze
       end
@@ -31,11 +31,6 @@ module Relspec
           Decision.new(kind: entry.decision, deb: entry.deb, version: entry.version, from: entry.from,
                        causes: Array(entry.causes).freeze, depends: entry.depends&.freeze).freeze
         end.freeze
-      end
-
-      def source_of(record)
-        PackageSource.new(url: record["url"], commit: record["commit"], commit_time: record["commit_time"],
-                          version: record["version"]).freeze
       end
     end
   end

@@ -1,5 +1,7 @@
 # frozen_string_literal: true
 
+require_relative "../plan/source_record"
+
 module Relspec
   module Diff
     # One package's decision on one target, as the diff sees it: the kind
@@ -34,8 +36,9 @@ module Relspec
       end
     end
 
-    # Where a package's source comes from (url, commit, …), for commit ranges.
-    PackageSource = Struct.new(:url, :commit, :commit_time, :version, keyword_init: true)
+    # Where a package's source comes from (url, commit, …): the lock's own
+    # typed record, compared field by field (SourceChange).
+    PackageSource = Plan::SourceRecord
 
     # Everything a diff compares of one release: its name, where it was read
     # (+source+, as the user named it), the spec digest, per ancestor and

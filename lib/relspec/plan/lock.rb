@@ -5,6 +5,7 @@ require "json"
 require_relative "history"
 require_relative "../project"
 require_relative "cause"
+require_relative "source_record"
 
 module Relspec
   module Plan
@@ -23,17 +24,23 @@ module Relspec
       # spelled out when read: the chains of a deep graph add up to the
       # square of its depth, which only a written lock pays); +depends+
       # (builds; nil in locks written before it was recorded): Decision#depends.
+      # Its fields, in the order the lock writes them (LockParser accepts
+      # exactly these): the one place that defines them.
       class Entry
+        FIELDS = %w[decision deb version from causes depends debian_digest].freeze
+        # The decisions a lock records; all but "unavailable" have a version.
+        DECISIONS = %w[inherit build published system unavailable].freeze
+
         attr_reader :decision, :deb, :version, :from, :depends, :debian_digest
 
         def initialize(decision:, deb: nil, version: nil, from: nil, causes: nil, depends: nil, debian_digest: nil)
-          @decision = decision
-          @deb = deb
-          @version = version
-          @from = from
-          @causes = causes
-          @depends = depends
-          @debian_digest = debian_digest
+          @decision = Lock.frozen(decision)
+          @deb = Lock.frozen(deb)
+          @version = Lock.frozen(version)
+          @from = Lock.frozen(from)
+          @causes = causes.is_a?(Cause) ? causes : Lock.frozen(causes)
+          @depends = Lock.frozen(depends)
+          @debian_digest = Lock.frozen(debian_digest)
           freeze
         end
 
@@ -42,24 +49,35 @@ module Relspec
         end
 
         def to_h
-          { "decision" => decision, "deb" => deb, "version" => version, "from" => from, "causes" => causes,
-            "depends" => depends, "debian_digest" => debian_digest }.compact
+          FIELDS.to_h { |field| [field, public_send(field)] }.compact
+        end
+      end
+
+      # +value+ frozen all the way down (text, lists, mappings), as a copy
+      # when it is not frozen yet: a lock is a value, whoever reads it.
+      def self.frozen(value)
+        case value
+        when Hash then value.to_h { |key, item| [frozen(key), frozen(item)] }.freeze
+        when Array then value.map { |item| frozen(item) }.freeze
+        when String then -value
+        else value.freeze
         end
       end
 
       attr_reader :release, :spec_digest, :ancestors, :packages, :targets, :history, :warnings, :notes
 
-      # +ancestors+: name => codename => digest; +packages+: name => source
-      # record; +targets+: "codename/arch" => package => Entry; +history+: History.
+      # +ancestors+: name => codename => digest; +packages+: name =>
+      # SourceRecord (or its mapping); +targets+: "codename/arch" => package
+      # => Entry; +history+: History. Everything is kept deep-frozen.
       def initialize(release:, spec_digest:, ancestors:, packages:, targets:, history:, warnings:, notes:)
-        @release = release
-        @spec_digest = spec_digest
-        @ancestors = ancestors
-        @packages = packages
-        @targets = targets
+        @release = Lock.frozen(release)
+        @spec_digest = Lock.frozen(spec_digest)
+        @ancestors = Lock.frozen(ancestors)
+        @packages = packages.to_h { |name, record| [Lock.frozen(name), SourceRecord.from(record)] }.freeze
+        @targets = targets.to_h { |target, entries| [Lock.frozen(target), entries.to_h { |name, entry| [Lock.frozen(name), entry] }.freeze] }.freeze
         @history = history
-        @warnings = warnings
-        @notes = notes
+        @warnings = Lock.frozen(warnings)
+        @notes = Lock.frozen(notes)
         freeze
       end
 
@@ -114,7 +132,7 @@ module Relspec
       def to_h
         {
           FORMAT_KEY => FORMAT_VERSION, "release" => release, "spec_digest" => spec_digest, "ancestors" => ancestors,
-          "packages" => packages,
+          "packages" => packages.transform_values(&:to_h),
           "targets" => targets.transform_values { |entries| entries.transform_values(&:to_h) },
           "history" => history.to_h, "warnings" => warnings, "notes" => notes
         }
