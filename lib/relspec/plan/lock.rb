@@ -6,6 +6,7 @@ require_relative "history"
 require_relative "../project"
 require_relative "cause"
 require_relative "source_record"
+require_relative "../frozen"
 
 module Relspec
   module Plan
@@ -34,13 +35,13 @@ module Relspec
         attr_reader :decision, :deb, :version, :from, :depends, :debian_digest
 
         def initialize(decision:, deb: nil, version: nil, from: nil, causes: nil, depends: nil, debian_digest: nil)
-          @decision = Lock.frozen(decision)
-          @deb = Lock.frozen(deb)
-          @version = Lock.frozen(version)
-          @from = Lock.frozen(from)
-          @causes = causes.is_a?(Cause) ? causes : Lock.frozen(causes)
-          @depends = Lock.frozen(depends)
-          @debian_digest = Lock.frozen(debian_digest)
+          @decision = Frozen.deep(decision)
+          @deb = Frozen.deep(deb)
+          @version = Frozen.deep(version)
+          @from = Frozen.deep(from)
+          @causes = causes.is_a?(Cause) ? causes : Frozen.deep(causes)
+          @depends = Frozen.deep(depends)
+          @debian_digest = Frozen.deep(debian_digest)
           freeze
         end
 
@@ -53,31 +54,20 @@ module Relspec
         end
       end
 
-      # +value+ frozen all the way down (text, lists, mappings), as a copy
-      # when it is not frozen yet: a lock is a value, whoever reads it.
-      def self.frozen(value)
-        case value
-        when Hash then value.to_h { |key, item| [frozen(key), frozen(item)] }.freeze
-        when Array then value.map { |item| frozen(item) }.freeze
-        when String then -value
-        else value.freeze
-        end
-      end
-
       attr_reader :release, :spec_digest, :ancestors, :packages, :targets, :history, :warnings, :notes
 
       # +ancestors+: name => codename => digest; +packages+: name =>
       # SourceRecord (or its mapping); +targets+: "codename/arch" => package
       # => Entry; +history+: History. Everything is kept deep-frozen.
       def initialize(release:, spec_digest:, ancestors:, packages:, targets:, history:, warnings:, notes:)
-        @release = Lock.frozen(release)
-        @spec_digest = Lock.frozen(spec_digest)
-        @ancestors = Lock.frozen(ancestors)
-        @packages = packages.to_h { |name, record| [Lock.frozen(name), SourceRecord.from(record)] }.freeze
-        @targets = targets.to_h { |target, entries| [Lock.frozen(target), entries.to_h { |name, entry| [Lock.frozen(name), entry] }.freeze] }.freeze
+        @release = Frozen.deep(release)
+        @spec_digest = Frozen.deep(spec_digest)
+        @ancestors = Frozen.deep(ancestors)
+        @packages = packages.to_h { |name, record| [Frozen.deep(name), SourceRecord.from(record)] }.freeze
+        @targets = targets.to_h { |target, entries| [Frozen.deep(target), entries.to_h { |name, entry| [Frozen.deep(name), entry] }.freeze] }.freeze
         @history = history
-        @warnings = Lock.frozen(warnings)
-        @notes = Lock.frozen(notes)
+        @warnings = Frozen.deep(warnings)
+        @notes = Frozen.deep(notes)
         freeze
       end
 
