@@ -10,9 +10,10 @@ require_relative "../support/release_file_editor"
 # osdep `foo` the distribution's archive provides as ruby-foo: the cache is
 # untrusted and only ever a shortcut. The release's gem_source is a closed
 # port, so a plan that does not find ruby-foo in the archive fails (exit 1,
-# naming the URL) and one that finds it succeeds. One workspace and one
-# reprepro archive for the file; each example its own copy of the archive
-# and its own cache folder.
+# naming the URL) and one that finds it succeeds. One workspace, one
+# reprepro archive and one cache folder for the file (the catalog's cache
+# kept, so only the first plan loads the workspace); each example its own
+# copy of the archive and an empty apt cache.
 RSpec.describe "relspec plan with a hostile archive-versions cache", :tmpdir do
   before(:all) do
     @base = Dir.mktmpdir("relspec-hostile-archive-versions")
@@ -32,6 +33,7 @@ RSpec.describe "relspec plan with a hostile archive-versions cache", :tmpdir do
   BAR = "Package: ruby-bar\nVersion: 1.0-1\nArchitecture: amd64\n"
 
   before do
+    FileUtils.rm_rf(File.join(cache, "relspec", "apt"))
     FileUtils.cp_r(File.join(@base, "debian"), File.join(@dir, "debian"))
     FileUtils.mkdir_p(File.join(@dir, "specs"))
     File.write(File.join(@dir, "specs", "g.yml"),
@@ -41,7 +43,7 @@ RSpec.describe "relspec plan with a hostile archive-versions cache", :tmpdir do
   end
 
   def cache
-    File.join(@dir, "cache")
+    File.join(@base, "cache")
   end
 
   def plan

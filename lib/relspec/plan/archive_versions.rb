@@ -2,7 +2,6 @@
 
 require "digest"
 require_relative "../apt/dependency"
-require_relative "../apt/version"
 
 module Relspec
   module Plan
@@ -20,8 +19,14 @@ module Relspec
       SEPARATOR = "--- provided ---"
       # What a line of the entry can hold: a name without spaces or control
       # characters (Debian's names are [a-z0-9+.-]; an index may hold
-      # anything) and a version dpkg accepts.
-      NAME = /\A[^\s[:cntrl:]]+\z/
+      # anything) and a version dpkg accepts: exactly Apt::Version.valid?
+      # (its VALID, and no empty revision after a trailing "-"), written as
+      # one pattern so that a whole section of 60,000 lines is checked in
+      # one match (a check per line took four times as long as the reading).
+      NAME = /[^\s\p{Cc}]+/
+      VERSION = /(?:\d+:[0-9](?:[A-Za-z0-9.+~:-]*[A-Za-z0-9.+~:])?|[0-9](?:[A-Za-z0-9.+~-]*[A-Za-z0-9.+~])?)/
+      LINES = /\A(?:#{NAME} #{VERSION}\n)*\z/
+      PAIR = /\A#{NAME} #{VERSION}\n\z/
 
       # The versions of the +target+'s +component+ in +repository+ (an
       # Apt::Repository or Apt::HostLists), from +cache+ (Apt::Cache) when
@@ -53,7 +58,7 @@ module Relspec
       # Whether [name, version] can be a line of the entry.
       def self.entry?(pair)
         name, version = pair
-        NAME.match?(name.to_s) && !version.nil? && Apt::Version.valid?(version) && !version.match?(/\s/)
+        !version.nil? && PAIR.match?("#{name} #{version}\n")
       end
 
       # A Provides field this reader cannot parse provides nothing.
@@ -84,12 +89,9 @@ module Relspec
 
       # The [name, version] of each line, or nil when one is not that.
       def self.pairs(lines)
-        lines.split("\n").map do |line|
-          pair = line.split(" ", 2)
-          return nil unless pair.size == 2 && entry?(pair)
+        return nil unless LINES.match?(lines)
 
-          pair
-        end
+        lines.split("\n").map { |line| line.split(" ", 2) }
       end
       private_class_method :pairs
 
