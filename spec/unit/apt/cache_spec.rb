@@ -2,20 +2,12 @@
 
 require_relative "../unit_helper"
 require "stringio"
-require "tmpdir"
 require "relspec/apt/cache"
 
 # The apt cache in a temporary folder: an entry that is not a regular file
 # reads as missing (a FIFO without waiting on it), one that cannot be
 # written is noted once and skipped.
-RSpec.describe Relspec::Apt::Cache do
-  around do |example|
-    Dir.mktmpdir("relspec-apt-cache") do |dir|
-      @dir = dir
-      example.run
-    end
-  end
-
+RSpec.describe Relspec::Apt::Cache, :tmpdir do
   let(:notes) { StringIO.new }
   let(:cache) { described_class.new(@dir, notes: notes) }
   let(:sha) { "a" * 64 }

@@ -1,25 +1,17 @@
 # frozen_string_literal: true
 
 require_relative "../unit_helper"
-require "tmpdir"
 require "relspec/debian/overlay"
 
 # An overlay in a temporary project folder.
-RSpec.describe Relspec::Debian::Overlay do
-  around do |example|
-    Dir.mktmpdir("relspec-overlay") do |root|
-      @root = root
-      example.run
-    end
-  end
-
+RSpec.describe Relspec::Debian::Overlay, :tmpdir do
   def write(relative, content)
-    path = File.join(@root.b, "overlays", "base", "cmake", relative.b)
+    path = File.join(@dir.b, "overlays", "base", "cmake", relative.b)
     FileUtils.mkdir_p(File.dirname(path))
     File.binwrite(path, content)
   end
 
-  let(:overlay) { described_class.for(@root, "base/cmake") }
+  let(:overlay) { described_class.for(@dir, "base/cmake") }
 
   it "reads files with placeholders replaced, and patches with a DEP-3 header" do
     write("files/README", "for @RELSPEC_RELEASE@\n")
