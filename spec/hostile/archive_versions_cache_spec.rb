@@ -13,7 +13,9 @@ require_relative "../support/release_file_editor"
 # naming the URL) and one that finds it succeeds. One workspace, one
 # reprepro archive and one cache folder for the file (the catalog's cache
 # kept, so only the first plan loads the workspace); each example its own
-# copy of the archive and an empty apt cache.
+# copy of the archive and an empty apt cache. The archive's Release file
+# also carries text relspec prints (case 11): its control characters are
+# escaped.
 RSpec.describe "relspec plan with a hostile archive-versions cache", :tmpdir do
   before(:all) do
     @base = Dir.mktmpdir("relspec-hostile-archive-versions")
@@ -122,5 +124,15 @@ RSpec.describe "relspec plan with a hostile archive-versions cache", :tmpdir do
     expect(without.stderr).to include("http://127.0.0.1:1")
     index([BAR, FOO])
     expect(planned(plan)).to include("tools/app")
+  end
+
+  it "prints the codename a Release file claims with its control characters escaped (case 11)" do
+    release = File.join(@dir, "debian", "dists", "bookworm", "Release")
+    File.write(release, File.read(release).sub("Codename: bookworm\n", "Codename: evil\e[2J\n")
+                                          .sub("Suite: bookworm\n", "Suite: tri\rxie\n"))
+    run = plan
+    expect([run.exit_code, run.stdout]).to eq([1, ""])
+    expect(run.stderr).to include("the Release file is of evil\\e[2J/tri\\rxie, not bookworm")
+    expect(run.stderr).not_to match(/[\e\r]/)
   end
 end

@@ -9,6 +9,7 @@ require_relative "cache"
 require_relative "signature"
 require_relative "release_file"
 require_relative "package_index"
+require_relative "../printable"
 
 module Relspec
   module Apt
@@ -96,7 +97,7 @@ module Relspec
         return listed unless listed.empty?
 
         raise Missing, "#{url}/dists/#{codename}/Release lists no #{directory}/Packages index " \
-                       "(architectures: #{release.architectures.join(' ')})"
+                       "(architectures: #{Printable.text(release.architectures.join(' '))})"
       end
 
       def read_release(codename)
@@ -120,7 +121,8 @@ module Relspec
 
       def check_release(release, codename, base)
         unless release.describes?(codename)
-          raise Error, "#{url}/#{base}: the Release file is of #{[release.codename, release.suite].compact.uniq.join('/')}, " \
+          raise Error, "#{url}/#{base}: the Release file is of " \
+                       "#{Printable.text([release.codename, release.suite].compact.uniq.join('/'))}, " \
                        "not #{codename} (a Release file served under another distribution's name is refused)"
         end
         if release.expired?(@clock.call)
