@@ -4,6 +4,7 @@ require "spec_helper"
 require "digest"
 require "zlib"
 require_relative "../support/release_file_editor"
+require_relative "../support/gem_osdep_release"
 
 # The cache of a distribution archive's versions (Plan::ArchiveVersions,
 # issue 34 cases 6-8), tried through `relspec plan` of a release whose gem
@@ -19,13 +20,7 @@ require_relative "../support/release_file_editor"
 RSpec.describe "relspec plan with a hostile archive-versions cache", :tmpdir do
   before(:all) do
     @base = Dir.mktmpdir("relspec-hostile-archive-versions")
-    builder = WorkspaceBuilder.new(File.join(@base, "ws"))
-    builder.package("tools/app", type: :ruby, date: "2020-01-01T00:00:00Z", osdeps: ["foo"])
-    builder.osdeps("foo:\n  gem: foo\n")
-    builder.layout("tools/app")
-    builder.create
-    AptRepositoryBuilder.new(File.join(@base, "debian"), codenames: ["bookworm"], architectures: ["amd64"])
-                        .add("ruby-foo", "1.2.0-1", codename: "bookworm", arch: "amd64")
+    GemOsdepRelease.build(@base, archive: "debian", package: ["ruby-foo", "1.2.0-1"])
   end
 
   after(:all) { FileUtils.rm_rf(@base) }
