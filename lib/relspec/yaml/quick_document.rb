@@ -161,7 +161,13 @@ module Relspec
           top[1] + [top[0].is_a?(Hash) ? top[2] : top[0].size]
         end
 
+        # Keys are mostly names ("base/types", "decision"): a key starting
+        # with a letter is text unless it is one of YAML's words.
+        WORDS = /\A(?:yes|true|on|no|false|off|null)\z/i
+
         def convert_key(value)
+          return value if value.match?(/\A[A-Za-z]/) && !value.match?(WORDS)
+
           @scanner ||= Psych::ScalarScanner.new(Psych::ClassLoader::Restricted.new([], []))
           @scanner.tokenize(value)
         rescue Psych::DisallowedClass
