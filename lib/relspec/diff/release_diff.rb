@@ -32,12 +32,15 @@ module Relspec
             source_changes(old, new, targets))
       end
 
-      # Every field of the records of the packages on both sides.
+      # Every field of the records of the packages on both sides, and what
+      # a side planned instead of its out-of-date lock found recorded
+      # otherwise in that lock (Snapshot#edited: a lock edited by hand).
       def self.source_changes(old, new, targets)
         decided = targets.flat_map { |target| target.changes.map(&:package) }.uniq
-        (old.packages.keys & new.packages.keys).sort.filter_map do |package|
+        moved = (old.packages.keys & new.packages.keys).sort.filter_map do |package|
           SourceChange.of(package, old.packages[package], new.packages[package], decided: decided.include?(package))
         end
+        moved + Array(old.edited) + Array(new.edited)
       end
 
       def self.ancestor_changes(old, new, targets)

@@ -48,9 +48,11 @@ module Relspec
     # the autoproj workspace of a spec read from disk (where the sources'
     # git repositories are, to count commits), nil otherwise; +stale+: the
     # lock this side would have been read from, when it was out of date and
-    # the side was planned instead (nil: read from +source+ as it is).
+    # the side was planned instead (nil: read from +source+ as it is);
+    # +edited+: SourceChanges from the plan to what that lock records (a
+    # lock edited by hand to point a package elsewhere), or nil.
     Snapshot = Struct.new(:release, :source, :spec_digest, :ancestors, :packages, :targets, :spec, :workspace, :stale,
-                          keyword_init: true) do
+                          :edited, keyword_init: true) do
       def self.empty(release, source)
         new(release: release, source: source, spec_digest: nil, ancestors: {}, packages: {}, targets: {}, spec: nil).freeze
       end

@@ -41,4 +41,18 @@ RSpec.describe Relspec::Diff::ReleaseDiff do
     expect(diff.to_h).not_to have_key("sources")
     expect(Relspec::Diff.render([diff], "text")).to eq("")
   end
+
+  it "is a change when a side planned instead of its out-of-date lock found the lock pointing elsewhere" do
+    edited = Relspec::Diff::SourceChange.of("base/types", lock({}).packages["base/types"],
+                                            lock("url" => "https://evil.example.org/t.git").packages["base/types"],
+                                            decided: false, recorded_in: "releases/r/lock.yml")
+    planned = Relspec::Diff::Snapshot.new(**Relspec::Diff::LockView.snapshot(lock({}), source: "specs/r.yml").to_h,
+                                          stale: "releases/r/lock.yml", edited: [edited]).freeze
+    diff = described_class.compare(Relspec::Diff::LockView.snapshot(lock({}), source: "HEAD:releases/r/lock.yml"), planned)
+    expect([diff.changed?, diff.status]).to eq([true, "changed"])
+    expect(Relspec::Diff.render([diff], "text"))
+      .to eq("r: HEAD:releases/r/lock.yml → specs/r.yml (planned: releases/r/lock.yml is out of date)\n  " \
+             "base/types: releases/r/lock.yml records url https://evil.example.org/t.git, the plan https://example.org/t.git\n")
+    expect(diff.to_h["sources"].first["recorded_in"]).to eq("releases/r/lock.yml")
+  end
 end
