@@ -2,6 +2,7 @@
 
 require "spec_helper"
 require_relative "../support/fixed_answer_server"
+require_relative "../support/gem_osdep_release"
 
 # A gem_source server on 127.0.0.1 whose compact index (/info/<name>) is not
 # one (issue 24, item 2): `relspec plan` of a release with a gem osdep says
@@ -11,13 +12,7 @@ require_relative "../support/fixed_answer_server"
 RSpec.describe "relspec plan against a gem_source answering nonsense" do
   before(:all) do
     @dir = Dir.mktmpdir("relspec-hostile-gems")
-    builder = WorkspaceBuilder.new(File.join(@dir, "ws"))
-    builder.package("tools/app", type: :ruby, date: "2020-01-01T00:00:00Z", osdeps: ["foo"])
-    builder.osdeps("foo:\n  gem: foo\n")
-    builder.layout("tools/app")
-    builder.create
-    AptRepositoryBuilder.new(File.join(@dir, "repos", "debian"), codenames: ["bookworm"], architectures: ["amd64"])
-                        .add("ruby-baz", "1.2.0-1", codename: "bookworm", arch: "amd64")
+    GemOsdepRelease.build(@dir, archive: "repos/debian", package: ["ruby-baz", "1.2.0-1"])
     @server = FixedAnswerServer.new(content_type: "text/plain")
     @url = @server.url
     FileUtils.mkdir_p(File.join(@dir, "specs"))

@@ -2,9 +2,10 @@
 
 require "spec_helper"
 
-# Hostile overlays (issue 12, cases 6 and 7), through the real CLI: a linked
-# overlay folder and patch names quilt's series file cannot carry are refused
-# with the path in the message, and nothing is emitted.
+# Hostile overlays (issue 12, cases 6 and 7; issue 34, case 14), through the
+# real CLI: a linked overlay folder, patch names quilt's series file cannot
+# carry and file names that are not UTF-8 are refused with the path in the
+# message, and nothing is emitted.
 RSpec.describe "relspec compile on hostile overlays" do
   # One fixture for all (building it is most of the time); each example
   # starts without overlays and without output.
@@ -44,6 +45,15 @@ RSpec.describe "relspec compile on hostile overlays" do
       FileUtils.mkdir_p(patches)
       File.write(File.join(patches, name), "--- a/x\n+++ b/x\n")
       expect_refused(compile, "error[overlay]: patch name #{name.inspect} cannot be listed in debian/patches/series")
+    end
+  end
+
+  %w[files patches debian].each do |part|
+    it "refuses a file name that is not UTF-8 in #{part}/" do
+      folder = File.join(@dir, "overlays", "base", "cmake", part)
+      FileUtils.mkdir_p(folder)
+      File.binwrite(File.join(folder.b, "caf\xE9.patch".b), "--- a/x\n+++ b/x\n")
+      expect_refused(compile, "overlays/base/cmake/#{part}/caf\\xE9.patch: error[overlay]: the file name is not UTF-8")
     end
   end
 end

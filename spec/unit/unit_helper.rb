@@ -8,6 +8,7 @@
 
 $LOAD_PATH.unshift(File.expand_path("../../lib", __dir__))
 require "rspec"
+require "tmpdir"
 
 # What keeps the unit layer in memory.
 module UnitLayer
@@ -55,6 +56,18 @@ RSpec.configure do |config|
     example.run
   ensure
     Thread.current[:relspec_unit] = nil
+  end
+
+  # `RSpec.describe X, :tmpdir`: each example gets an empty folder in @dir,
+  # for the few core files whose input is a folder (a cache, an overlay).
+  # (spec_helper's hook of the same name gives one when both are loaded.)
+  config.around(:each, :tmpdir) do |example|
+    next example.run if @dir
+
+    Dir.mktmpdir("relspec-unit") do |dir|
+      @dir = dir
+      example.run
+    end
   end
 end
 

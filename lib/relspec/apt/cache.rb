@@ -3,27 +3,39 @@
 require "fileutils"
 require_relative "../cache_dir"
 require_relative "../atomic_file"
+require_relative "../error"
 
 module Relspec
   module Apt
     # Verified index files of remote repositories, kept by the SHA256 of the
     # Release file that listed them: as long as an ancestor's Release file does
     # not change, its indices are never downloaded again.
+    #
+    # The cache is only ever a shortcut: an entry that is not a regular file
+    # (a directory, a FIFO) reads as missing without being opened for long
+    # (a FIFO would block), and an entry that cannot be written (a directory
+    # in the way, a full file system) is noted once on +notes+ and skipped.
     class Cache
       # The XDG cache folder (read from the environment, never written to it).
       def self.default_dir
         CacheDir.for("apt")
       end
 
-      def initialize(dir)
+      # +notes+: where the one line about an unwritable cache goes.
+      def initialize(dir, notes: $stderr)
         @dir = dir
+        @notes = notes
+        @noted = false
       end
 
       def read(release_sha256, path)
         return nil unless @dir
 
-        File.binread(location(release_sha256, path))
-      rescue SystemCallError
+        # O_NONBLOCK: opening a FIFO returns at once; fstat then refuses it
+        File.open(location(release_sha256, path), File::RDONLY | File::NONBLOCK) do |file|
+          file.stat.file? ? file.read.b : nil
+        end
+      rescue SystemCallError, IOError
         nil
       end
 
@@ -33,11 +45,20 @@ module Relspec
         target = location(release_sha256, path)
         FileUtils.mkdir_p(File.dirname(target))
         AtomicFile.write(target, bytes)
-      rescue SystemCallError
-        nil # a cache that cannot be written is only slower
+      rescue SystemCallError, Relspec::Error => e
+        note(target, e)
       end
 
       private
+
+      def note(target, error)
+        return if @noted
+
+        @noted = true
+        reason = error.message.sub(/ @ .*/, "").sub(/\Acannot write \S+: /, "")
+        @notes&.puts("relspec: note: the cache entry #{target} cannot be written (#{reason}); " \
+                     "going on without it (only slower)")
+      end
 
       def location(release_sha256, path)
         File.join(@dir, release_sha256, path.tr("/", "_"))

@@ -2,6 +2,7 @@
 
 require_relative "packages_scanner"
 require_relative "version"
+require_relative "../printable"
 
 module Relspec
   module Apt
@@ -38,7 +39,7 @@ module Relspec
             raise Invalid, "stanza #{number} has no Package or Version field"
           end
           unless Version.valid?(version)
-            raise Invalid, "stanza #{number} (Package: #{name}) has an invalid Version #{version.strip.inspect}"
+            raise Invalid, "stanza #{number} (Package: #{Printable.text(name)}) has an invalid Version #{version.strip.inspect}"
           end
 
           known = entries[name]

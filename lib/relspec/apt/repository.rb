@@ -9,6 +9,7 @@ require_relative "cache"
 require_relative "signature"
 require_relative "release_file"
 require_relative "package_index"
+require_relative "../printable"
 
 module Relspec
   module Apt
@@ -67,11 +68,15 @@ module Relspec
         verified_index(codename, arch, component).first
       end
 
-      # What identifies the content of that index without reading it: the
-      # SHA256 the Release file gives for it (raises Missing like packages).
+      # What identifies the content of that index without parsing it: the
+      # SHA256 of the file #packages reads, the first form the Release file
+      # lists that is present (not merely the first listed: a mirror may
+      # list a Packages.xz it dropped while it updates the .gz). Raises
+      # Missing like #packages; the bytes are kept for #packages.
       def index_digest(codename, arch, component: "main")
         release = release(codename)
-        release.checksum(listed_indices(release, codename, arch, component).first.first).sha256
+        path, = present_index(codename, release, listed_indices(release, codename, arch, component))
+        release.checksum(path).sha256
       end
 
       private
@@ -79,7 +84,7 @@ module Relspec
       # [text, where it was read]
       def verified_index(codename, arch, component)
         release = release(codename)
-        path, kind, bytes = first_present(codename, release, listed_indices(release, codename, arch, component))
+        path, kind, bytes = present_index(codename, release, listed_indices(release, codename, arch, component))
         where = "#{url}/dists/#{codename}/#{path}"
         [decompress(bytes, kind, where), where]
       end
@@ -92,7 +97,7 @@ module Relspec
         return listed unless listed.empty?
 
         raise Missing, "#{url}/dists/#{codename}/Release lists no #{directory}/Packages index " \
-                       "(architectures: #{release.architectures.join(' ')})"
+                       "(architectures: #{Printable.text(release.architectures.join(' '))})"
       end
 
       def read_release(codename)
@@ -116,7 +121,8 @@ module Relspec
 
       def check_release(release, codename, base)
         unless release.describes?(codename)
-          raise Error, "#{url}/#{base}: the Release file is of #{[release.codename, release.suite].compact.uniq.join('/')}, " \
+          raise Error, "#{url}/#{base}: the Release file is of " \
+                       "#{Printable.text([release.codename, release.suite].compact.uniq.join('/'))}, " \
                        "not #{codename} (a Release file served under another distribution's name is refused)"
         end
         if release.expired?(@clock.call)
@@ -147,6 +153,12 @@ module Relspec
         Signature.verify_detached(content, signature, @keyring).force_encoding(Encoding::UTF_8)
       rescue Signature::Invalid => e
         raise Error, "#{url}/#{base}/Release: signature check failed: #{e.message}"
+      end
+
+      # The first present index of +listed+, read once per Release file.
+      def present_index(codename, release, listed)
+        @present ||= {}
+        @present[[codename, release.sha256, listed]] ||= first_present(codename, release, listed)
       end
 
       # Mirrors often drop Packages.xz while their Release still lists it:

@@ -50,7 +50,7 @@ module Relspec
       def archive_source(codename, archive)
         @archives[codename] ||= AptSource.new(
           Plan::Ancestors.archive_reader(archive, @spec_dir, @fetcher_options, @apt_cache),
-          archive["components"] || ["main"], names_cache: @names_cache
+          archive.read_components, names_cache: @names_cache
         )
       end
 

@@ -3,6 +3,7 @@
 require "fileutils"
 require "open3"
 require_relative "../error"
+require_relative "../release_spec/values/archive"
 require_relative "../cache_dir"
 require_relative "../temporaries"
 require_relative "emulation"
@@ -89,16 +90,16 @@ module Relspec
       end
 
       def archive
-        @distribution&.archive || {}
+        @distribution&.archive || ReleaseSpec::Archive.new
       end
 
       def components_option
-        components = archive["components"]
-        components && !archive["host"] ? ["--components=#{components.join(',')}"] : []
+        components = archive.components
+        components && !archive.host? ? ["--components=#{components.join(',')}"] : []
       end
 
       def mirrors_or_raise
-        return [archive["url"]] if archive["url"] && !archive["host"]
+        return [archive.url] if archive.url && !archive.host?
 
         if host_codename == @target.codename
           sources = HOST_SOURCES.select { |file| File.file?(file) && !File.read(file).strip.empty? }

@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require "thor"
+require_relative "../printable"
 require_relative "strict_commands"
 require "json"
 
@@ -64,7 +65,7 @@ module Relspec
           selection.unavailable.each do |name, reason|
             why =
               if reason.dependency then "requires #{reason.dependency}"
-              elsif reason.left_out then "left out by #{reason.left_out.pattern.source} (#{reason.left_out.reason})"
+              elsif reason.left_out then "left out by #{Printable.text(reason.left_out.pattern.source)} (#{Printable.text(reason.left_out.reason)})"
               else "osdeps #{reason.osdeps.join(', ')} nonexistent"
               end
             puts format("  %-32s unavailable on #{codename}: %s", name, why)

@@ -3,6 +3,7 @@
 require "find"
 require_relative "../diagnostic"
 require_relative "../error"
+require_relative "../printable"
 
 module Relspec
   module Debian
@@ -103,6 +104,9 @@ module Relspec
 
         result = {}
         Find.find(base) do |path|
+          # the name goes into debian/patches/series, a patch and messages, all UTF-8
+          raise InvalidInput, [problem(Printable.text(path), "the file name is not UTF-8; rename it")] unless path.valid_encoding?
+
           stat = File.lstat(path)
           raise InvalidInput, [problem(path, "overlays may not contain links")] if stat.symlink?
           next unless stat.file?

@@ -4,6 +4,7 @@ require_relative "git_tree"
 require_relative "input"
 require_relative "lock_view"
 require_relative "snapshot"
+require_relative "source_change"
 
 module Relspec
   module Diff
@@ -95,7 +96,11 @@ module Relspec
         lock = @planner.call(full_spec)
         return read if Plan::LockGenerator.dump(lock) == text
 
-        Snapshot.new(**LockView.snapshot(lock, source: shown(spec_path)).to_h, stale: shown(lock_path)).freeze
+        planned = LockView.snapshot(lock, source: shown(spec_path))
+        edited = (planned.packages.keys & read.packages.keys).sort.filter_map do |package|
+          SourceChange.of(package, planned.packages[package], read.packages[package], decided: false, recorded_in: shown(lock_path))
+        end
+        Snapshot.new(**planned.to_h, stale: shown(lock_path), edited: edited.freeze).freeze
       end
     end
   end

@@ -2,6 +2,7 @@
 
 require_relative "snapshot"
 require_relative "../plan/lock_parser"
+require_relative "../printable"
 
 module Relspec
   module Diff
@@ -17,25 +18,23 @@ module Relspec
         snapshot(Plan::LockParser.parse(text, file: source, release: nil), source: source)
       end
 
-      # +lock+: a Plan::Lock; +source+: where it was read.
+      # +lock+: a Plan::Lock (deep-frozen: its records are shared); +source+:
+      # where it was read.
       def snapshot(lock, source:)
         Snapshot.new(release: lock.release, source: source, spec_digest: lock.spec_digest,
-                     ancestors: lock.ancestors.transform_values { |codenames| codenames.dup.freeze }.freeze,
-                     packages: lock.packages.transform_values { |record| source_of(record) }.freeze,
+                     ancestors: lock.ancestors,
+                     packages: lock.packages,
                      targets: lock.targets.transform_values { |entries| decisions(entries) }.freeze,
                      spec: nil).freeze
       end
 
+      # A lock file is untrusted text: the causes the diff prints are kept
+      # Printable (a plan's own already are, so both sides compare alike).
       def decisions(entries)
         entries.transform_values do |entry|
           Decision.new(kind: entry.decision, deb: entry.deb, version: entry.version, from: entry.from,
-                       causes: Array(entry.causes).freeze, depends: entry.depends&.freeze).freeze
+                       causes: Array(entry.causes).map { |line| Printable.text(line) }.freeze, depends: entry.depends).freeze
         end.freeze
-      end
-
-      def source_of(record)
-        PackageSource.new(url: record["url"], commit: record["commit"], commit_time: record["commit_time"],
-                          version: record["version"]).freeze
       end
     end
   end

@@ -47,12 +47,16 @@ module Relspec
           lines << "" << "**Why**" << ""
           causes.each { |text, members| lines << "- #{cause_line(text, members)}" }
         end
-        unless diff.ancestors.empty?
-          lines << "" << "**Ancestors**" << ""
-          diff.ancestors.each { |change| lines << "- #{escape(change.to_s)}" }
-        end
+        lines.concat(listed("Ancestors", diff.ancestors)).concat(listed("Sources", diff.sources))
         lines << ""
         lines.join("\n")
+      end
+
+      # A bold heading and one item per change, or nothing without changes.
+      def listed(heading, changes)
+        return [] if changes.empty?
+
+        ["", "**#{heading}**", ""] + changes.map { |change| "- #{escape(change.to_s)}" }
       end
 
       # Which side was planned (its lock out of date) and which was read.

@@ -5,14 +5,16 @@ require_relative "target_diff"
 require_relative "ancestor_change"
 require_relative "spec_changes"
 require_relative "commit_counter"
+require_relative "source_change"
 
 module Relspec
   module Diff
     # The diff of one release between two Snapshots: per target the
-    # decision changes, the ancestors that changed, and the spec keys that
-    # changed linked to the decisions they caused.
+    # decision changes, the ancestors that changed, the spec keys that
+    # changed linked to the decisions they caused, and the packages whose
+    # recorded source moved in a way the decisions do not show (SourceChange).
     class ReleaseDiff
-      attr_reader :old, :new, :targets, :ancestors, :spec_changes
+      attr_reader :old, :new, :targets, :ancestors, :spec_changes, :sources
 
       def self.compare(old, new, counter: CommitCounter.new(autoproj_root: new.workspace || old.workspace))
         commits = lambda do |package|
@@ -26,7 +28,19 @@ module Relspec
         targets = (old.targets.keys | new.targets.keys).sort.map do |target|
           TargetDiff.compare(target, old.targets[target], new.targets[target], commits: commits)
         end
-        new(old, new, targets, ancestor_changes(old, new, targets), SpecChanges.compare(old.spec, new.spec, targets))
+        new(old, new, targets, ancestor_changes(old, new, targets), SpecChanges.compare(old.spec, new.spec, targets),
+            source_changes(old, new, targets))
+      end
+
+      # Every field of the records of the packages on both sides, and what
+      # a side planned instead of its out-of-date lock found recorded
+      # otherwise in that lock (Snapshot#edited: a lock edited by hand).
+      def self.source_changes(old, new, targets)
+        decided = targets.flat_map { |target| target.changes.map(&:package) }.uniq
+        moved = (old.packages.keys & new.packages.keys).sort.filter_map do |package|
+          SourceChange.of(package, old.packages[package], new.packages[package], decided: decided.include?(package))
+        end
+        moved + Array(old.edited) + Array(new.edited)
       end
 
       def self.ancestor_changes(old, new, targets)
@@ -57,12 +71,13 @@ module Relspec
         end.uniq.sort
       end
 
-      def initialize(old, new, targets, ancestors, spec_changes)
+      def initialize(old, new, targets, ancestors, spec_changes, sources = [])
         @old = old
         @new = new
         @targets = targets.freeze
         @ancestors = ancestors.freeze
         @spec_changes = spec_changes.freeze
+        @sources = sources.freeze
         freeze
       end
 
@@ -80,7 +95,7 @@ module Relspec
       end
 
       def changed?
-        targets.any?(&:changed?) || !ancestors.empty? || !spec_changes.empty? || old.release != new.release
+        targets.any?(&:changed?) || !ancestors.empty? || !spec_changes.empty? || !sources.empty? || old.release != new.release
       end
 
       def rebuilds
@@ -124,7 +139,7 @@ module Relspec
         { "release" => release, "status" => status,
           "old" => side(old), "new" => side(new),
           "rebuilds" => rebuilds, "spec_changes" => spec_changes.map(&:to_h), "ancestors" => ancestors.map(&:to_h),
-          "targets" => targets.select(&:changed?).map(&:to_h) }
+          "targets" => targets.select(&:changed?).map(&:to_h) }.merge(sources.empty? ? {} : { "sources" => sources.map(&:to_h) })
       end
     end
   end

@@ -1,5 +1,7 @@
 # frozen_string_literal: true
 
+require_relative "../plan/source_record"
+
 module Relspec
   module Diff
     # One package's decision on one target, as the diff sees it: the kind
@@ -34,8 +36,9 @@ module Relspec
       end
     end
 
-    # Where a package's source comes from (url, commit, …), for commit ranges.
-    PackageSource = Struct.new(:url, :commit, :commit_time, :version, keyword_init: true)
+    # Where a package's source comes from (url, commit, …): the lock's own
+    # typed record, compared field by field (SourceChange).
+    PackageSource = Plan::SourceRecord
 
     # Everything a diff compares of one release: its name, where it was read
     # (+source+, as the user named it), the spec digest, per ancestor and
@@ -45,9 +48,11 @@ module Relspec
     # the autoproj workspace of a spec read from disk (where the sources'
     # git repositories are, to count commits), nil otherwise; +stale+: the
     # lock this side would have been read from, when it was out of date and
-    # the side was planned instead (nil: read from +source+ as it is).
+    # the side was planned instead (nil: read from +source+ as it is);
+    # +edited+: SourceChanges from the plan to what that lock records (a
+    # lock edited by hand to point a package elsewhere), or nil.
     Snapshot = Struct.new(:release, :source, :spec_digest, :ancestors, :packages, :targets, :spec, :workspace, :stale,
-                          keyword_init: true) do
+                          :edited, keyword_init: true) do
       def self.empty(release, source)
         new(release: release, source: source, spec_digest: nil, ancestors: {}, packages: {}, targets: {}, spec: nil).freeze
       end

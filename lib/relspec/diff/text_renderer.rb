@@ -30,6 +30,7 @@ module Relspec
           lines << "  spec: #{change} → #{Wording.decisions(change.decisions)}"
         end
         diff.ancestors.each { |change| lines << "  #{change}" }
+        diff.sources.each { |change| lines << "  #{change}" }
         diff.targets.select(&:changed?).each do |target|
           lines << "  #{paint(:bold, target.headline)}"
           width = target.changes.map { |change| KINDS.fetch(change.kind).size }.max

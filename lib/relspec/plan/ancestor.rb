@@ -57,9 +57,9 @@ module Relspec
       # A distribution's archive entry as a reader: this machine's apt lists
       # for `host: true` (Apt::HostLists), else a repository as below.
       def archive_reader(archive, base, fetcher_options, cache)
-        return Apt::HostLists.new if archive["host"] == true
+        return Apt::HostLists.new if archive.host?
 
-        entry = ReleaseSpec::RepositoryEntry.from(archive, base: base)
+        entry = archive.repository_entry(base)
         reader(entry, entry.location, fetcher_options, cache)
       end
 

@@ -8,13 +8,25 @@ module Relspec
     # What planning reads of a distribution's Packages index: the version of
     # each package and the versions packages provide with "=" (Ruby's
     # default gems: "Provides: ruby-date (= 3.2.2)"). Kept in the apt cache
-    # under the index's SHA256 (which the Release file gives without reading
-    # the index), so that a plan reads ~1.5 MB of names and versions instead
-    # of parsing Debian's whole main index (~90 MB, 4-8 s) every time.
-    # Writer (#dump) and reader (.load) of that cache entry are both here.
+    # under the SHA256 of the index file that is read (the compressed file,
+    # checked against the Release file), so that a plan reads ~1.5 MB of
+    # names and versions instead of parsing Debian's whole main index
+    # (~90 MB, 4-8 s) every time. Writer (#dump) and reader (.load) of that
+    # cache entry are both here. The entry is untrusted: every line is
+    # checked, and an entry with one bad line is made again from the index.
     class ArchiveVersions
       CACHE_ENTRY = "archive-versions"
       SEPARATOR = "--- provided ---"
+      # What a line of the entry can hold: a name without spaces or control
+      # characters (Debian's names are [a-z0-9+.-]; an index may hold
+      # anything) and a version dpkg accepts: exactly Apt::Version.valid?
+      # (its VALID, and no empty revision after a trailing "-"), written as
+      # one pattern so that a whole section of 60,000 lines is checked in
+      # one match (a check per line took four times as long as the reading).
+      NAME = /[^\s\p{Cc}]+/
+      VERSION = /(?:\d+:[0-9](?:[A-Za-z0-9.+~:-]*[A-Za-z0-9.+~:])?|[0-9](?:[A-Za-z0-9.+~-]*[A-Za-z0-9.+~])?)/
+      LINES = /\A(?:#{NAME} #{VERSION}\n)*\z/
+      PAIR = /\A#{NAME} #{VERSION}\n\z/
 
       # The versions of the +target+'s +component+ in +repository+ (an
       # Apt::Repository or Apt::HostLists), from +cache+ (Apt::Cache) when
@@ -29,7 +41,9 @@ module Relspec
         versions
       end
 
-      # From an Apt::PackageIndex.
+      # From an Apt::PackageIndex. A name no Debian package can have (a
+      # space, a control character) names nothing a plan asks for and could
+      # not be written as a line of the entry: it is left out.
       def self.from_index(index)
         provided = index.names.flat_map do |package|
           field = index[package].provides
@@ -37,7 +51,14 @@ module Relspec
 
           relations(field).select { |relation| relation.operator == "=" }.map { |relation| [relation.name, relation.version] }
         end
-        new(index.names.to_h { |name| [name, index[name].version] }, provided)
+        packages = index.names.map { |name| [name, index[name].version] }
+        new(packages.select { |pair| entry?(pair) }.to_h, provided.select { |pair| entry?(pair) })
+      end
+
+      # Whether [name, version] can be a line of the entry.
+      def self.entry?(pair)
+        name, version = pair
+        !version.nil? && PAIR.match?("#{name} #{version}\n")
       end
 
       # A Provides field this reader cannot parse provides nothing.
@@ -48,17 +69,28 @@ module Relspec
       end
       private_class_method :relations
 
-      # The versions #dump wrote, or nil when +text+ is not that (missing,
-      # or changed since: its first line is the SHA256 of the rest).
+      # The versions #dump wrote, or nil when +text+ is not that: missing,
+      # changed since (its first line is the SHA256 of the rest), or with a
+      # line that is not a name and a valid version.
       def self.load(text)
-        sha256, body = text&.b&.force_encoding(Encoding::UTF_8)&.split("\n", 2)
+        text = text&.b&.force_encoding(Encoding::UTF_8)
+        return nil unless text&.valid_encoding?
+
+        sha256, body = text.split("\n", 2)
         return nil unless body && Digest::SHA256.hexdigest(body) == sha256
 
         packages, provided = body.split("#{SEPARATOR}\n", 2)
-        new(pairs(packages).to_h, pairs(provided.to_s))
+        return nil unless provided
+
+        packages = pairs(packages)
+        provided = pairs(provided)
+        packages && provided ? new(packages.to_h, provided) : nil
       end
 
+      # The [name, version] of each line, or nil when one is not that.
       def self.pairs(lines)
+        return nil unless LINES.match?(lines)
+
         lines.split("\n").map { |line| line.split(" ", 2) }
       end
       private_class_method :pairs

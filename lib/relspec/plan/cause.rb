@@ -1,12 +1,16 @@
 # frozen_string_literal: true
 
+require_relative "../printable"
+
 module Relspec
   module Plan
     # Why a package is built in this release, or why it cannot exist on a
     # target. Causes chain: a package rebuilt (or left out) because of one of
     # its dependencies carries that dependency's cause, so every rebuild can
     # be traced to a spec entry or a fact about the ancestors, and every gap
-    # to an osdeps entry.
+    # to an osdeps entry. Text from the spec or the workspace (matches,
+    # reasons, refs, osdeps names) is kept Printable: causes are printed by
+    # `plan` and `why`, one per line.
     class Cause
       attr_reader :kind, :detail, :because
 
@@ -19,11 +23,11 @@ module Relspec
       end
 
       def self.blacklisted(match, reason)
-        new(:blacklisted, reason ? "\"#{match}\" (#{reason})" : "\"#{match}\"", nil)
+        new(:blacklisted, reason ? "\"#{Printable.text(match)}\" (#{Printable.text(reason)})" : "\"#{Printable.text(match)}\"", nil)
       end
 
       def self.pinned(commit, ref)
-        new(:pinned, ref ? "#{commit} (#{ref})" : commit.to_s, nil)
+        new(:pinned, ref ? "#{Printable.text(commit)} (#{Printable.text(ref)})" : Printable.text(commit), nil)
       end
 
       def self.gem_version(version, ancestor, theirs)
@@ -36,12 +40,13 @@ module Relspec
 
       def self.nonexistent_osdeps(osdeps, codename)
         plural = osdeps.size > 1
-        new(:nonexistent_osdeps, "#{plural ? 'osdeps' : 'osdep'} #{osdeps.join(', ')} #{plural ? 'are' : 'is'} " \
+        new(:nonexistent_osdeps, "#{plural ? 'osdeps' : 'osdep'} #{osdeps.map { |name| Printable.text(name) }.join(', ')} " \
+                                 "#{plural ? 'are' : 'is'} " \
                                  "nonexistent on #{codename}", nil)
       end
 
       def self.left_out(match, reason)
-        new(:left_out, "\"#{match}\" (#{reason})", nil)
+        new(:left_out, "\"#{Printable.text(match)}\" (#{Printable.text(reason)})", nil)
       end
 
       def self.unavailable_dependency(package, cause)

@@ -47,7 +47,7 @@ module Relspec
       # default gems are ruby-<gem> virtual packages of libruby<version>
       # ("Provides: ruby-date (= 3.2.2)" on bookworm).
       def self.versions(repository, archive, target, wanted, cache)
-        (archive["components"] || ["main"]).each_with_object({}) do |component, out|
+        archive.read_components.each_with_object({}) do |component, out|
           index = ArchiveVersions.of(repository, target, component, cache)
           names = wanted.is_a?(Regexp) ? index.names.grep(wanted) : wanted
           names.each { |name| newest(out, name, index.version(name)) }

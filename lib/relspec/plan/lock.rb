@@ -5,6 +5,8 @@ require "json"
 require_relative "history"
 require_relative "../project"
 require_relative "cause"
+require_relative "source_record"
+require_relative "../frozen"
 
 module Relspec
   module Plan
@@ -23,17 +25,23 @@ module Relspec
       # spelled out when read: the chains of a deep graph add up to the
       # square of its depth, which only a written lock pays); +depends+
       # (builds; nil in locks written before it was recorded): Decision#depends.
+      # Its fields, in the order the lock writes them (LockParser accepts
+      # exactly these): the one place that defines them.
       class Entry
+        FIELDS = %w[decision deb version from causes depends debian_digest].freeze
+        # The decisions a lock records; all but "unavailable" have a version.
+        DECISIONS = %w[inherit build published system unavailable].freeze
+
         attr_reader :decision, :deb, :version, :from, :depends, :debian_digest
 
         def initialize(decision:, deb: nil, version: nil, from: nil, causes: nil, depends: nil, debian_digest: nil)
-          @decision = decision
-          @deb = deb
-          @version = version
-          @from = from
-          @causes = causes
-          @depends = depends
-          @debian_digest = debian_digest
+          @decision = Frozen.deep(decision)
+          @deb = Frozen.deep(deb)
+          @version = Frozen.deep(version)
+          @from = Frozen.deep(from)
+          @causes = causes.is_a?(Cause) ? causes : Frozen.deep(causes)
+          @depends = Frozen.deep(depends)
+          @debian_digest = Frozen.deep(debian_digest)
           freeze
         end
 
@@ -42,24 +50,24 @@ module Relspec
         end
 
         def to_h
-          { "decision" => decision, "deb" => deb, "version" => version, "from" => from, "causes" => causes,
-            "depends" => depends, "debian_digest" => debian_digest }.compact
+          FIELDS.to_h { |field| [field, public_send(field)] }.compact
         end
       end
 
       attr_reader :release, :spec_digest, :ancestors, :packages, :targets, :history, :warnings, :notes
 
-      # +ancestors+: name => codename => digest; +packages+: name => source
-      # record; +targets+: "codename/arch" => package => Entry; +history+: History.
+      # +ancestors+: name => codename => digest; +packages+: name =>
+      # SourceRecord (or its mapping); +targets+: "codename/arch" => package
+      # => Entry; +history+: History. Everything is kept deep-frozen.
       def initialize(release:, spec_digest:, ancestors:, packages:, targets:, history:, warnings:, notes:)
-        @release = release
-        @spec_digest = spec_digest
-        @ancestors = ancestors
-        @packages = packages
-        @targets = targets
+        @release = Frozen.deep(release)
+        @spec_digest = Frozen.deep(spec_digest)
+        @ancestors = Frozen.deep(ancestors)
+        @packages = packages.to_h { |name, record| [Frozen.deep(name), SourceRecord.from(record)] }.freeze
+        @targets = targets.to_h { |target, entries| [Frozen.deep(target), entries.to_h { |name, entry| [Frozen.deep(name), entry] }.freeze] }.freeze
         @history = history
-        @warnings = warnings
-        @notes = notes
+        @warnings = Frozen.deep(warnings)
+        @notes = Frozen.deep(notes)
         freeze
       end
 
@@ -114,7 +122,7 @@ module Relspec
       def to_h
         {
           FORMAT_KEY => FORMAT_VERSION, "release" => release, "spec_digest" => spec_digest, "ancestors" => ancestors,
-          "packages" => packages,
+          "packages" => packages.transform_values(&:to_h),
           "targets" => targets.transform_values { |entries| entries.transform_values(&:to_h) },
           "history" => history.to_h, "warnings" => warnings, "notes" => notes
         }

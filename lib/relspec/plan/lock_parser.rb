@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require_relative "lock"
+require_relative "source_record"
 require_relative "history"
 require_relative "../yaml/located_document"
 require_relative "../yaml/quick_document"
@@ -22,9 +23,9 @@ module Relspec
     # recorded builds become the history.
     class LockParser
       ROOT_KEYS = %w[relspec_lock release spec_digest ancestors packages targets history warnings notes].freeze
-      ENTRY_KEYS = %w[decision deb version from causes depends debian_digest].freeze
-      PACKAGE_KEYS = %w[url commit commit_time version tag branch].freeze
-      DECISIONS = %w[inherit build published system unavailable].freeze
+      ENTRY_KEYS = Lock::Entry::FIELDS
+      PACKAGE_KEYS = SourceRecord.fields.freeze
+      DECISIONS = Lock::Entry::DECISIONS
       DIGEST = /\A[0-9a-f]{64}\z/
       DISCARD_HINT = "fix the file (it is in git), or run again with --discard-lock to start over " \
                      "(the release's repository then keeps revisions from being given twice)"
@@ -97,7 +98,7 @@ module Relspec
           path = ["packages", name]
           mapping(record, path)
           known_keys(record, path, PACKAGE_KEYS)
-          [name, record.to_h { |key, _| [key, string(record, path + [key])] }]
+          [name, SourceRecord.from(record.to_h { |key, _| [key, string(record, path + [key])] })]
         end
       end
 
@@ -117,8 +118,12 @@ module Relspec
 
         causes = entry["causes"].nil? ? nil : strings(entry, path + ["causes"])
         depends = entry["depends"].nil? ? nil : strings(entry, path + ["depends"])
+        version = optional_version(entry, path + ["version"])
+        # every decision but unavailable names the version it stands for
+        fail_at(path + ["version"], "#{describe(path)}: a #{decision} decision needs a version") if version.nil? && decision != "unavailable"
+
         Lock::Entry.new(decision: decision, deb: optional_string(entry, path + ["deb"]),
-                        version: optional_version(entry, path + ["version"]), from: optional_string(entry, path + ["from"]),
+                        version: version, from: optional_string(entry, path + ["from"]),
                         causes: causes, depends: depends,
                         debian_digest: entry["debian_digest"] && digest(entry, path + ["debian_digest"])).freeze
       end
@@ -164,6 +169,11 @@ module Relspec
 
         fail_at(path, "#{describe(path)} must be a mapping") unless value.is_a?(Hash)
 
+        # every key of a lock is text (a name, a target, a field): a bare
+        # 7 or true is not what relspec writes
+        odd = value.keys.find { |key| @document.typed_key?(path + [key]) }
+        fail_at(path + [odd], "the key #{odd} in #{describe(path)} must be text (relspec writes it quoted: \"#{odd}\")", key: true) if odd
+
         value
       end
 
@@ -172,11 +182,24 @@ module Relspec
         fail_at(path + [unknown.first], "unknown key #{unknown.first.inspect} in #{describe(path)}") unless unknown.empty?
       end
 
+      # Text as relspec writes it: a number, true or null where text
+      # belongs (a commit 1234567, a version 1.10 that would read as 1.1)
+      # is not what it wrote, whatever it may have meant.
       def string(hash, path)
         value = hash[path.last]
-        fail_at(path, "#{describe(path)} must be text") unless value.is_a?(String) || value.is_a?(Integer) || value.is_a?(Float)
+        fail_at(path, "#{describe(path)} must be text, not #{kind_of(value, path)}") unless value.is_a?(String)
 
-        @document.raw(path) || value.to_s
+        value
+      end
+
+      def kind_of(value, path)
+        written = @document.raw(path) || value.to_s
+        case value
+        when nil then "null"
+        when Numeric then "the number #{written}"
+        when true, false then written
+        else "a #{value.is_a?(Hash) ? 'mapping' : 'list'}"
+        end
       end
 
       def optional_string(hash, path)
@@ -213,8 +236,9 @@ module Relspec
         path.empty? ? "the lock" : path.join(".")
       end
 
-      def fail_at(path, message)
-        location = @document.location(path.compact)
+      # +key+: point at the key of +path+ rather than at its value.
+      def fail_at(path, message, key: false)
+        location = key ? @document.key_location(path.compact) : @document.location(path.compact)
         raise LockError, [Diagnostic.error("lock", "cannot read the lock: #{message}", location: location, hint: DISCARD_HINT)]
       end
     end

@@ -2,21 +2,22 @@
 
 require_relative "../error"
 require_relative "architectures"
+require_relative "values/archive"
 
 module Relspec
   module ReleaseSpec
     # A target distribution as autoproj's osdeps name it: a type (ubuntu
     # inherits Debian's package names, so it is keyed "ubuntu,debian") and the
     # labels autoproj matches against the running system.
-    # +archive+: where the distribution's own packages can be read (a
-    # repository entry with components), or nil. +debhelper_compat+: the
+    # +archive+: where the distribution's own packages can be read (an
+    # Archive: a repository entry with components), or nil. +debhelper_compat+: the
     # debhelper compatibility level generated debian/ folders use there (the
     # highest its debhelper supports; docs/compile.md lists the sources).
     # +ruby+: the "major.minor" of the distribution's Ruby (autoproj loads
     # `.osdeps-ruby<major><minor>` files for it), or nil when unknown.
     Distribution = Struct.new(:codename, :type, :labels, :archive, :debhelper_compat, :ruby, keyword_init: true) do
       def self.define(codename, type, labels, archive: nil, debhelper_compat: DEFAULT_DEBHELPER_COMPAT, ruby: nil)
-        new(codename: codename, type: type, labels: labels.map(&:to_s).freeze, archive: archive&.freeze,
+        new(codename: codename, type: type, labels: labels.map(&:to_s).freeze, archive: Archive.from(archive),
             debhelper_compat: debhelper_compat, ruby: ruby).freeze
       end
 

@@ -7,11 +7,13 @@ require_relative "values/blacklist_entry"
 require_relative "values/leave_out"
 require_relative "values/pin"
 require_relative "values/prefixes"
+require_relative "../frozen"
 
 module Relspec
   module ReleaseSpec
     # A release as relspec uses it: its own values plus everything inherited,
-    # each value with the Origin it came from. Immutable.
+    # each value with the Origin it came from. Immutable, all the way down:
+    # every reader of the spec shares its values.
     class EffectiveSpec
       # Key order of `relspec show`: identity, lineage, content, packaging.
       KEYS = %w[
@@ -24,7 +26,7 @@ module Relspec
       # +values+: key => value; +origins+: key => Origin, and for pins
       # "pins" => { package => Origin } because pins merge entry by entry.
       def initialize(values, origins)
-        @values = values.freeze
+        @values = Frozen.deep(values)
         @origins = origins.freeze
         freeze
       end

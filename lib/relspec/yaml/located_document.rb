@@ -101,6 +101,7 @@ module Relspec
         @positions = {}
         @key_positions = {}
         @raw = {}
+        @typed_keys = {}
         @anchors = {}
         @anchor_sizes = {}
         @nodes = 0
@@ -145,6 +146,13 @@ module Relspec
       # The scalar exactly as written (`20.10` stays "20.10", not 20.1).
       def raw(path)
         @raw[path]
+      end
+
+      # Whether the key at the end of +path+ was written plain as something
+      # YAML reads as other than text (`7:`, `true:`, `~:`): keys are kept as
+      # text, so only this says that the writer did not mean text.
+      def typed_key?(path)
+        @typed_keys.key?(path)
       end
 
       private
@@ -222,9 +230,21 @@ module Relspec
           end
           first_seen[key] = key_node.start_line + 1
           @key_positions[key_path] = at(key_node)
+          note_typed_key(key_node, key_path)
           result[key] = convert(value_node, key_path, depth + 1)
         end
         result.freeze
+      end
+
+      # A plain key that YAML would read as something else than text.
+      def note_typed_key(node, path)
+        return if node.quoted || node.tag
+
+        @scanner ||= Psych::ScalarScanner.new(Psych::ClassLoader::Restricted.new([], []))
+        value = @scanner.tokenize(node.value)
+        @typed_keys[path] = value unless value.is_a?(String)
+      rescue Psych::DisallowedClass
+        nil
       end
 
       def mapping_key(node)

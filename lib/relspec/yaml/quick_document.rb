@@ -55,9 +55,19 @@ module Relspec
         @raw[path]
       end
 
+      # Never: a plain key that is not text makes #parse give nil, and
+      # LocatedDocument#typed_key? says where.
+      def typed_key?(_path)
+        false
+      end
+
       # Positions are not kept: readers re-read with LocatedDocument to say
       # where an error is.
       def location(_path)
+        nil
+      end
+
+      def key_location(_path)
         nil
       end
 
@@ -104,6 +114,7 @@ module Relspec
           top = @stack.last
           if top && top[0].is_a?(Hash) && top[2].nil?
             raise Unsuitable if top[0].key?(value) # duplicate key
+            raise Unsuitable unless quoted || convert_key(value).is_a?(String) # LocatedDocument#typed_key?
 
             top[2] = value
           else
@@ -148,6 +159,19 @@ module Relspec
         # The path of the next value of +top+: its pending key or next index.
         def path_of(top)
           top[1] + [top[0].is_a?(Hash) ? top[2] : top[0].size]
+        end
+
+        # Keys are mostly names ("base/types", "decision"): a key starting
+        # with a letter is text unless it is one of YAML's words.
+        WORDS = /\A(?:yes|true|on|no|false|off|null)\z/i
+
+        def convert_key(value)
+          return value if value.match?(/\A[A-Za-z]/) && !value.match?(WORDS)
+
+          @scanner ||= Psych::ScalarScanner.new(Psych::ClassLoader::Restricted.new([], []))
+          @scanner.tokenize(value)
+        rescue Psych::DisallowedClass
+          value
         end
 
         def convert(value, quoted)

@@ -54,6 +54,18 @@ RSpec.describe "relspec diff --base" do
     expect(@project.git("status", "--porcelain")).to eq("")
   end
 
+  it "reports a lock edited by hand (another URL) as a change, with what it records, --exit-code 1" do
+    lock = File.join(@dir, "releases", "base", "lock.yml")
+    committed = File.read(lock)
+    File.write(lock, committed.sub(/^    url: .*$/, "    url: https://evil.example.org/x.git"))
+    run = relspec("diff", "--base", "HEAD", "specs/base.yml", "--exit-code", chdir: @dir)
+    expect([run.exit_code, run.stderr]).to eq([1, ""])
+    expect(run.stdout).to start_with("base: HEAD:releases/base/lock.yml → specs/base.yml (planned: releases/base/lock.yml is out of date)\n  " \
+                                     "base/cmake: releases/base/lock.yml records url https://evil.example.org/x.git, the plan ")
+  ensure
+    File.write(lock, committed)
+  end
+
   it "limits the comparison to the specs named" do
     run = diff("specs/child.yml", "--format", "json")
     expect(JSON.parse(run.stdout)["releases"].map { |release| release["release"] }).to eq(["child"])

@@ -47,4 +47,24 @@ RSpec.describe Relspec::Plan::ArchiveVersions do
     expect(described_class.load("")).to be_nil
     expect(described_class.load(nil)).to be_nil
   end
+
+  it "leaves out a name no line of the entry can hold" do
+    spaced = Relspec::Apt::PackageIndex.parse("Package: extra foo\nVersion: 1.0-1\n\nPackage: ok\nVersion: 2.0-1\n")
+    versions = described_class.from_index(spaced)
+    expect(versions.names).to eq(["ok"])
+    expect(described_class.load(versions.dump).names).to eq(["ok"])
+  end
+
+  def signed(body)
+    "#{Digest::SHA256.hexdigest(body)}\n#{body}"
+  end
+
+  it "reads nothing of an entry with one bad line, even with the right checksum" do
+    good = "ruby-thor 1.2.1-1\n#{described_class::SEPARATOR}\nruby-date 3.2.2\n"
+    expect(described_class.load(signed(good)).version("ruby-thor")).to eq("1.2.1-1")
+    ["zzz\n#{good}", "extra foo 1.13.10+dfsg-2+b1\n#{good}", "bad\tname 1.0\n#{good}", "x not-a-version\n#{good}",
+     "#{good}ruby-json\n", "ruby-thor 1.2.1-1\n", "x 1.0\xff\n#{good}"].each do |body|
+      expect(described_class.load(signed(body))).to be_nil, body.inspect
+    end
+  end
 end

@@ -9,4 +9,19 @@ RSpec.describe Relspec::Plan::Cause do
     expect(described_class.steps(cause.chain)).to eq(["  depends on base/types", '    └ blacklisted by "base/types" (own API)'])
     expect(described_class.steps([])).to eq([])
   end
+
+  it "keeps text from the spec and the workspace on one printable line" do
+    expect(described_class.left_out("gui/**", "qt4\nforged").to_s).to eq('left out by "gui/**" (qt4\\nforged)')
+    expect(described_class.blacklisted("base/types", "x\e[2J").to_s).to eq('blacklisted by "base/types" (x\\e[2J)')
+    expect(described_class.blacklisted("base/types", nil).to_s).to eq('blacklisted by "base/types"')
+    expect(described_class.pinned("abc", "v1\r").to_s).to eq("pinned to abc (v1\\r)")
+    expect(described_class.nonexistent_osdeps(%W[qt\n4 boost], "bookworm").to_s)
+      .to eq("osdeps qt\\n4, boost are nonexistent on bookworm")
+  end
+
+  it "chains a dependency's cause" do
+    cause = described_class.depends_on("base/types", described_class.missing)
+    expect(cause.chain).to eq(["depends on base/types", "missing in all ancestors"])
+    expect(cause.depth).to eq(1)
+  end
 end

@@ -85,4 +85,40 @@ RSpec.describe Relspec::Plan::LockParser do
     build = parse(format1).history.build(Relspec::Plan::Target.new("bookworm", "amd64"), "base/types", "2.0")
     expect([build.revision, build.debian_digest]).to eq([4, digest])
   end
+
+  it "refuses what is not text where text belongs, at its line" do
+    numbered = text.sub("commit: \"#{'1' * 40}\"", "commit: 1234567")
+    error = error_of(numbered)
+    expect(error.message).to include("packages.base/types.commit must be text, not the number 1234567")
+    expect(error.location.line).to eq(numbered.lines.index("    commit: 1234567\n") + 1)
+    expect(error_of(text.sub('version: "2.0-3~bookworm"', "version: 2.10")).message)
+      .to include("targets.bookworm/amd64.base/types.version must be text, not the number 2.10")
+    expect(error_of(text.sub("release: r\n", "release: 12\n")).message).to include("release must be text, not the number 12")
+    expect(error_of(text.sub("release: r\n", "release: true\n")).message).to include("release must be text, not true")
+  end
+
+  it "refuses a decision other than unavailable without a version" do
+    expect(error_of(text.sub('version: "2.0-3~bookworm"', "version: null")).message)
+      .to include("targets.bookworm/amd64.base/types: a build decision needs a version")
+  end
+
+  it "refuses a key written plain as a number, naming the key's line" do
+    bad = text.sub("packages:\n", "packages:\n  7:\n    url: x\n")
+    error = error_of(bad)
+    expect(error.message).to include('the key 7 in packages must be text (relspec writes it quoted: "7")')
+    expect([error.location.line, error.location.column]).to eq([bad.lines.index("  7:\n") + 1, 3])
+    expect(parse(text.sub("packages:\n", "packages:\n  \"7\":\n    url: x\n")).packages["7"].url).to eq("x")
+  end
+
+  it "gives typed records, frozen all the way down" do
+    read = parse(text)
+    record = read.packages.fetch("base/types")
+    expect(record).to be_a(Relspec::Plan::SourceRecord)
+    expect([record.url, record.commit]).to eq(["https://example.org/t.git", "1" * 40])
+    entry = read.targets.fetch("bookworm/amd64").fetch("base/types")
+    [read, read.packages, record, record.url, read.targets, read.targets["bookworm/amd64"], entry, entry.causes,
+     entry.causes.first, entry.depends, read.ancestors, read.ancestors["p"], read.warnings].each do |value|
+      expect(value).to be_frozen
+    end
+  end
 end

@@ -108,4 +108,38 @@ RSpec.describe "ReleaseSpec typed values" do
     expect(effective({ "parent" => %w[a b], "gems" => { "rake" => "13.0" } })).to have_attributes(parents: %w[a b],
                                                                                                   gems: { "rake" => "13.0" })
   end
+
+  describe Relspec::ReleaseSpec::Archive do
+    let(:values) do
+      { "distributions" => { "bookworm" => { "archive" => { "path" => "../debian", "trusted" => true, "components" => %w[main contrib] } } } }
+    end
+
+    it "is the distribution's archive as a frozen, typed value" do
+      archive = effective(values).distributions.fetch("bookworm").archive
+      expect(archive).to have_attributes(path: "../debian", url: nil, trusted: true, components: %w[main contrib], host?: false)
+      expect([archive, archive.components, archive.components.first, archive.path]).to all(be_frozen)
+      expect(archive.read_components).to eq(%w[main contrib])
+      expect(archive.repository_entry("/specs")).to have_attributes(path: "/debian", trusted: true)
+      expect(archive.to_h).to eq(values.dig("distributions", "bookworm", "archive"))
+    end
+
+    it "reads main when no components are written, and knows host: true" do
+      archive = Relspec::ReleaseSpec::Archive.from("host" => true)
+      expect([archive.host?, archive.read_components]).to eq([true, ["main"]])
+      expect(Relspec::ReleaseSpec::Archive.from(nil)).to be_nil
+      expect(Relspec::ReleaseSpec::Archive.from("nonsense")).to be_nil
+      expect(Relspec::ReleaseSpec::Archive.from(archive)).to equal(archive)
+    end
+  end
+
+  describe Relspec::ReleaseSpec::EffectiveSpec do
+    it "is frozen all the way down, without freezing the caller's own values" do
+      blacklist = [{ "match" => +"base/types", "reason" => +"new API" }]
+      spec = effective({ "release" => +"demo", "blacklist" => blacklist, "targets" => { "bookworm" => ["amd64"] } })
+      [spec.values, spec["release"], spec["blacklist"], spec["blacklist"].first, spec["blacklist"].first["reason"],
+       spec.targets, spec.targets["bookworm"]].each { |value| expect(value).to be_frozen }
+      expect(blacklist.first["reason"]).not_to be_frozen
+      expect { spec["blacklist"].first["reason"] << "!" }.to raise_error(FrozenError)
+    end
+  end
 end

@@ -56,4 +56,11 @@ RSpec.describe Relspec::Yaml::LocatedDocument do
     document = described_class.load("/nonexistent/specs/x.yml")
     expect(document.diagnostics.map(&:rule)).to eq(["unreadable-file"])
   end
+
+  it "says which keys were written plain as something other than text" do
+    document = described_class.parse("a:\n  7: x\n  \"8\": y\n  true: z\n  name: w\n", file: "f.yml")
+    expect(document.data["a"].keys).to eq(%w[7 8 true name])
+    expect([%w[a 7], %w[a 8], %w[a true], %w[a name]].map { |path| document.typed_key?(path) }).to eq([true, false, true, false])
+    expect(document.key_location(%w[a 7]).line).to eq(2)
+  end
 end

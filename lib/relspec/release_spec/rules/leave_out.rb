@@ -40,6 +40,12 @@ module Relspec
 
         def self.codename_problems(file, codenames, path)
           return [] unless codenames.is_a?(Array)
+          # `targets: []` would validate and leave nothing out, silently
+          if codenames.empty?
+            return [Diagnostic.error("leave-out-target", "the leave_out entry names no target: it would leave nothing out",
+                                     location: file.location(path),
+                                     hint: "name the codenames it applies to, or remove `targets` to leave it out on every target")]
+          end
 
           codenames.each_with_index.filter_map do |codename, index|
             next if Names::CODENAME.match?(codename)

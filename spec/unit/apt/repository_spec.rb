@@ -1,0 +1,37 @@
+# frozen_string_literal: true
+
+require_relative "../unit_helper"
+require "digest"
+require "zlib"
+require "relspec/apt/repository"
+
+# A repository folder written here (no reprepro): what #index_digest names
+# is the index #packages reads.
+RSpec.describe Relspec::Apt::Repository, :tmpdir do
+  def write_repository(gz_text, xz_listed:)
+    gz = Zlib.gzip(gz_text)
+    FileUtils.mkdir_p(File.join(@dir, "dists", "bookworm", "main", "binary-amd64"))
+    File.binwrite(File.join(@dir, "dists", "bookworm", "main", "binary-amd64", "Packages.gz"), gz)
+    listed = xz_listed ? " #{'0' * 64} 123 main/binary-amd64/Packages.xz\n" : ""
+    File.write(File.join(@dir, "dists", "bookworm", "Release"),
+               "Codename: bookworm\nArchitectures: amd64\nComponents: main\nSHA256:\n#{listed} " \
+               "#{Digest::SHA256.hexdigest(gz)} #{gz.bytesize} main/binary-amd64/Packages.gz\n")
+    Digest::SHA256.hexdigest(gz)
+  end
+
+  let(:repository) { described_class.new(Relspec::Apt::Fetcher.new(@dir), trusted: true) }
+
+  it "names the SHA256 of the index it reads: the first listed form that is present" do
+    gz_sha256 = write_repository("Package: ruby-foo\nVersion: 1.0-1\n", xz_listed: true)
+    expect(repository.index_digest("bookworm", "amd64")).to eq(gz_sha256)
+    expect(repository.packages("bookworm", "amd64")["ruby-foo"].version).to eq("1.0-1")
+  end
+
+  it "names another SHA256 when only the present form changed" do
+    before = write_repository("Package: ruby-foo\nVersion: 1.0-1\n", xz_listed: true)
+    after = write_repository("Package: ruby-foo\nVersion: 2.0-1\n", xz_listed: true)
+    expect(described_class.new(Relspec::Apt::Fetcher.new(@dir), trusted: true).index_digest("bookworm", "amd64"))
+      .to eq(after)
+    expect(after).not_to eq(before)
+  end
+end
