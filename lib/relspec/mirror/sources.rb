@@ -108,7 +108,7 @@ module Relspec
                                                                                        "(host: true for this machine's apt lists)")]
         end
 
-        archive["host"] == true ? host_into(index, target) : archive_into(index, archive, target)
+        archive.host? ? host_into(index, target) : archive_into(index, archive, target)
         index.binaries.select { |binary| binary.required? && binary.origin.distribution }.map(&:name).sort
       end
 
@@ -122,7 +122,7 @@ module Relspec
 
       def archive_into(index, archive, target)
         reader = Plan::Ancestors.archive_reader(archive, @spec_dir, @fetcher_options, @cache)
-        (archive["components"] || ["main"]).each do |component|
+        archive.read_components.each do |component|
           text = reader.packages_text(target.codename, target.arch, component: component)
           index.add(text, origin: Origin.new(label: target.codename, fetcher: reader.fetcher, distribution: true),
                           where: "#{reader.url} (#{target.codename}/#{component}/binary-#{target.arch})")
