@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require "spec_helper"
+require_relative "../support/git_project"
 
 # Repository data `relspec osdeps package-set` would hand to users' root
 # apt-get (issue 33): an osdeps file of the published repository whose
@@ -61,7 +62,42 @@ RSpec.describe "relspec osdeps package-set on hostile repository data", :tmpdir 
   it "writes a package set of a well-formed repository (the cases above differ from it in one entry)" do
     publish(entry("rock-a-base-cmake"))
     run = relspec("osdeps", "package-set", "--out", "package-set", chdir: @dir)
-    expect(run.stderr).to start_with("wrote package-set")
+    expect(run.stderr).to match(/\Awrote package-set \((\d+) of \1 files written, 0 removed\)\n\z/)
     expect(File.read(File.join(@dir, "package-set", "data", "a-amd64.yml"))).to eq(entry("rock-a-base-cmake"))
+  end
+
+  # The maintainer's recipe (docs/releasing.md): the package set is a git
+  # repository, regenerated after each publish.
+  it "keeps the git history and the maintainer's files of its folder, says unchanged, removes only its own stale files" do
+    publish(entry("rock-a-base-cmake"))
+    set = File.join(@dir, "package-set")
+    run = relspec("osdeps", "package-set", "--out", "package-set", chdir: @dir)
+    expect(run.exit_code).to eq(0)
+    File.write(File.join(set, "README.md"), "the maintainer's\n")
+    File.write(File.join(set, "data", "old-amd64.yml"), "a release no longer published\n")
+    GitProject.init(set)
+    GitProject.commit_all(set, "demo releases")
+
+    second = relspec("osdeps", "package-set", "--out", "package-set", chdir: @dir)
+    expect(second.stderr).to match(/\Awrote package-set \(0 of \d+ files written, 1 removed\)\n\z/)
+    third = relspec("osdeps", "package-set", "--out", "package-set", chdir: @dir)
+    expect(third.stderr).to match(/\Aunchanged package-set \(\d+ files\)\n\z/)
+    expect(GitProject.git(set, "log", "--format=%s")).to eq("demo releases\n")
+    expect(GitProject.git(set, "status", "--porcelain")).to eq(" D data/old-amd64.yml\n")
+    expect(File.read(File.join(set, "README.md"))).to eq("the maintainer's\n")
+    # the shipped files with non-ASCII text compare equal byte for byte
+    expect(Dir.glob("lib/**/*.rb", base: set).any? { |path| !File.binread(File.join(set, path)).ascii_only? }).to be(true)
+  end
+
+  it "refuses to write through a symbolic link in its folder" do
+    publish(entry("rock-a-base-cmake"))
+    FileUtils.mkdir_p(File.join(@dir, "package-set"))
+    FileUtils.mkdir_p(File.join(@dir, "elsewhere"))
+    File.symlink(File.join(@dir, "elsewhere"), File.join(@dir, "package-set", "data"))
+    run = relspec("osdeps", "package-set", "--out", "package-set", chdir: @dir)
+    expect(run.exit_code).to eq(1)
+    expect(run.stderr).to eq("relspec: error: package-set/data is a symbolic link: the package set writes its own " \
+                             "files only, remove it or choose another --out\n")
+    expect(Dir.children(File.join(@dir, "elsewhere"))).to eq([])
   end
 end

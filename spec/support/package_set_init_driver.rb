@@ -43,7 +43,7 @@ results = ARGV.each_slice(2).map do |root, package_set|
   end
   writer.close
   text = reader.read
-  Process.wait(pid)
-  text.empty? ? { "message" => "the case's process died (#{$?.inspect})" } : JSON.parse(text)
+  _, status = Process.wait2(pid)
+  text.empty? ? { "message" => "the case's process died (#{status.inspect})" } : JSON.parse(text)
 end
 File.write(output, JSON.generate(results))
