@@ -151,7 +151,7 @@ RSpec.describe "the package set's init.rb on hostile data" do
   it "lets a well-formed package set through to autoproj's osdeps and apt (the control)" do
     result = @results.fetch(:control)
     expect(result["osdeps"]).to include("base/cmake")
-    expect(result["message"]).to include("relspec package set: apt-get update -o Dir::Etc::sourcelist=" \
+    expect(result["message"]).to include("relspec package set: timeout 300 apt-get update -o Dir::Etc::sourcelist=" \
                                          "/etc/apt/sources.list.d/relspec-#{RELEASE}.list")
     expect(result["apt_changed"]).to be(true)
   end

@@ -46,7 +46,7 @@ module RelspecPackageSet
       system = this_system
       lineage = lineage(release)
       mapping = mapping(lineage, system)
-      sources = AptSources.new(@data, lineage, system.codename)
+      sources = AptSources.new(@data, lineage, system.codename, File.join(@dir, "state"))
       selection = Relspec::Osdeps::Selection.new(mapping, indices(lineage, system), blacklist)
       environment = Environment.read(lineage, selection.active.values)
       # everything read is checked: only now apt, /etc/apt and the
@@ -56,7 +56,7 @@ module RelspecPackageSet
         Autoproj::OSPackageResolver.new(selection.active.transform_values { |deb| { "default" => deb } },
                                         File.join(@dir, "state", "relspec.osdeps"))
       )
-      sources.install
+      sources.install(refresh: updating?)
       environment.apply(@ws.env)
       Autoproj.message "  relspec: #{release} for #{system}: #{selection.active.size} binary packages, " \
                        "#{selection.inactive.size} built from source"
@@ -195,11 +195,21 @@ module RelspecPackageSet
       end
     end
 
+    # `autoproj update` (or aup): the time a user asks for what is new,
+    # so apt's lists of the release are refreshed even when nothing of the
+    # package set changed (a republished package).
+    def updating?
+      %w[autoproj aup].include?(File.basename($PROGRAM_NAME)) &&
+        (File.basename($PROGRAM_NAME) == "aup" || ARGV.reject { |arg| arg.start_with?("-") }.first == "update")
+    end
+
     def record(release, selection)
       state = File.join(@dir, "state")
       FileUtils.mkdir_p(state)
       File.write(File.join(state, "release"), "#{release}\n")
       File.write(File.join(state, "inactive.yml"), YAML.dump(selection.inactive))
+      # what the removal (docs/releasing.md) gives to apt-get purge
+      File.write(File.join(state, "packages"), selection.active.values.uniq.sort.map { |deb| "#{deb}\n" }.join)
       selection.unmatched.each do |entry|
         Autoproj.warn "relspec: #{entry.location}: #{entry.pattern.source.inspect} matches no package of #{release}"
       end
@@ -226,28 +236,39 @@ module RelspecPackageSet
   # trusted=yes only for a repository its spec says is trusted. Every
   # entry of data/apt.yml is checked (Trust) when this is made, before
   # anything is written.
+  #
+  # apt's lists of these sources are updated (apt-get update, bounded)
+  # when a source or key is new or changed, when apt has no lists of it,
+  # when its entry in data/apt.yml changed, on `autoproj update` (a
+  # republished package arrives with it), and after any failed update: state/apt/<release> records the last successful one and
+  # is removed before each try.
   class AptSources
     SOURCES = "/etc/apt/sources.list.d"
     KEYRINGS = "/etc/apt/keyrings"
+    LISTS = "/var/lib/apt/lists"
+    HEADER = "# written by relspec's autoproj package set\n"
+    # apt-get update: at most this long, each connection this long
+    DEADLINE = 300
+    CONNECTION_TIMEOUT = 30
 
-    def initialize(data, lineage, codename)
+    def initialize(data, lineage, codename, state)
       @data = data
       @codename = codename
+      @state = File.join(state, "apt")
       path = File.join(data, "apt.yml")
       apt = RelspecPackageSet.read_yaml(path, {})
       RelspecPackageSet.refuse("#{path}: is not a mapping of releases") unless apt.is_a?(Hash)
       @releases = lineage.map { |name| source(path, name, apt[name]) }
     end
 
-    # {list:, line:, keyring:, key:} of one release, checked.
+    # {name:, list:, text:, keyring:, key:, stamp:} of one release, checked.
     def source(path, name, entry)
       problem = entry.nil? ? "has no entry" : Relspec::Osdeps::Trust.apt_entry(entry)
       RelspecPackageSet.refuse("#{path}: #{name}: #{problem}") if problem
 
-      list = File.join(SOURCES, "relspec-#{name}.list")
-      unless entry["key"]
-        return { list: list, text: "#{HEADER}deb [trusted=yes] #{entry['url']} #{@codename} main\n" }
-      end
+      release = { name: name, url: entry["url"], list: File.join(SOURCES, "relspec-#{name}.list"),
+                  stamp: "#{YAML.dump(entry)}#{@codename}\n" }
+      return release.merge(text: "#{HEADER}deb [trusted=yes] #{entry['url']} #{@codename} main\n") unless entry["key"]
 
       keyring = File.join(KEYRINGS, "relspec-#{name}.gpg")
       key = File.join(@data, entry["key"])
@@ -255,26 +276,59 @@ module RelspecPackageSet
       unless real.start_with?("#{File.realpath(@data)}/")
         RelspecPackageSet.refuse("#{path}: #{name}: the key #{entry['key']} is not a file of the package set")
       end
-      { list: list, text: "#{HEADER}deb [signed-by=#{keyring}] #{entry['url']} #{@codename} main\n",
-        keyring: keyring, key: File.binread(real) }
+      release.merge(text: "#{HEADER}deb [signed-by=#{keyring}] #{entry['url']} #{@codename} main\n",
+                    keyring: keyring, key: File.binread(real))
     end
-    HEADER = "# written by relspec's autoproj package set\n"
 
-    def install
-      stale = @releases.reject do |release|
-        File.file?(release[:list]) && File.read(release[:list]) == release[:text] &&
-          (!release[:keyring] || (File.file?(release[:keyring]) && File.binread(release[:keyring]) == release[:key]))
-      end
-      return if stale.empty?
-
+    def install(refresh: false)
+      stale = @releases.reject { |release| current?(release) }
       stale.each do |release|
         put(release[:keyring], release[:key]) if release[:keyring]
         put(release[:list], release[:text])
       end
-      update
+      outdated = refresh ? @releases : @releases.reject { |release| updated?(release) }
+      update(@releases.select { |release| stale.include?(release) || outdated.include?(release) })
     end
 
     private
+
+    def current?(release)
+      File.file?(release[:list]) && File.read(release[:list]) == release[:text] &&
+        (!release[:keyring] || (File.file?(release[:keyring]) && File.binread(release[:keyring]) == release[:key]))
+    end
+
+    # apt has lists of the source, and the last update of this workspace
+    # was of this very entry and succeeded.
+    def updated?(release)
+      marker = File.join(@state, release[:name])
+      File.file?(marker) && File.read(marker) == release[:stamp] && !lists(release).empty?
+    end
+
+    # apt's list files of the source: its URL without the scheme, / as _.
+    def lists(release)
+      prefix = release[:url].sub(%r{\Ahttps?://}, "").chomp("/").tr("/", "_")
+      Dir.glob("#{prefix}_dists_#{@codename}_*Packages*", base: LISTS)
+    end
+
+    # Only the release's sources, so any error apt reports is theirs. apt
+    # exits 0 when a repository cannot be reached, or its Release does not
+    # verify but it has lists from before (it keeps using those): refused
+    # here as well, or autoproj would fail later with "Unable to locate".
+    def update(releases)
+      FileUtils.mkdir_p(@state)
+      releases.each do |release|
+        marker = File.join(@state, release[:name])
+        FileUtils.rm_f(marker)
+        Autoproj.message "  relspec: apt-get update for #{release[:list]}"
+        command = ["timeout", DEADLINE.to_s, "apt-get", "update", "-o", "Dir::Etc::sourcelist=#{release[:list]}",
+                   "-o", "Dir::Etc::sourceparts=-", "-o", "APT::Get::List-Cleanup=0",
+                   "-o", "Acquire::http::Timeout=#{CONNECTION_TIMEOUT}", "-o", "Acquire::https::Timeout=#{CONNECTION_TIMEOUT}"]
+        command.unshift("sudo") unless Process.uid.zero?
+        run(*command, refuse: /^(Err:|W: GPG error|E: )/,
+                      failure: "the next autoproj run tries again; #{release[:url]} must be reachable and its Release verify")
+        File.write(marker, release[:stamp])
+      end
+    end
 
     def put(path, content)
       if Process.uid.zero?
@@ -286,25 +340,13 @@ module RelspecPackageSet
       end
     end
 
-    # Only the release's sources, so any error apt reports is theirs. apt
-    # exits 0 when a repository cannot be reached, or its Release does not
-    # verify but it has lists from before (it keeps using those): refused
-    # here as well, or autoproj would fail later with "Unable to locate".
-    def update
-      @releases.each do |release|
-        Autoproj.message "  relspec: apt-get update for #{release[:list]}"
-        command = ["apt-get", "update", "-o", "Dir::Etc::sourcelist=#{release[:list]}", "-o", "Dir::Etc::sourceparts=-",
-                   "-o", "APT::Get::List-Cleanup=0"]
-        command.unshift("sudo") unless Process.uid.zero?
-        run(*command, refuse: /^(Err:|W: GPG error|E: )/)
-      end
-    end
-
-    def run(*command, stdin: "", refuse: nil)
+    def run(*command, stdin: "", refuse: nil, failure: nil)
       output, status = Open3.capture2e(*command, stdin_data: stdin)
       return if status.success? && !(refuse && output.match?(refuse))
 
-      RelspecPackageSet.refuse("#{command.join(' ')} failed:\n#{output}")
+      why = [(status.exitstatus == 124 && command.include?("timeout") ? "no answer within #{DEADLINE} s" : nil), failure]
+      why = why.compact.empty? ? "" : " (#{why.compact.join('; ')})"
+      RelspecPackageSet.refuse("#{command.join(' ')} failed#{why}:\n#{output}")
     end
   end
 
