@@ -217,10 +217,10 @@ RSpec.describe "an autoproj workspace using relspec's package set" do
   it "brings a republished package with autoproj update and autoproj osdeps" do
     autoproj!("osdeps")
     before = installed_version("rock-demo-base-tools-legacy")
-    checkout = File.join(@workspace, "src", "tools", "legacy")
-    File.write(File.join(checkout, "NEWS"), "republished\n")
-    GitProject.commit_all(checkout, "tools/legacy: NEWS")
-    GitProject.git(checkout, "push", "--quiet", "autobuild", "HEAD")
+    upstream = File.join(@workspace, "repositories", "tools", "legacy.git")
+    File.write(File.join(upstream, "NEWS"), "republished\n")
+    GitProject.commit_all(upstream, "tools/legacy: NEWS")
+    GitProject.git(File.join(@workspace, "src", "tools", "legacy"), "pull", "--quiet", "--ff-only", "autobuild", "master")
     %w[compile build publish].each do |command|
       run!(command, "specs/demo-base.yml", *(command == "build" ? %w[--backend host --jobs 2] : []))
     end
