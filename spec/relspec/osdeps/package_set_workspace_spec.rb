@@ -217,7 +217,9 @@ RSpec.describe "an autoproj workspace using relspec's package set" do
     expect(packages[/^Package: rock-demo-base-tools-legacy\n(?:.+\n)*?Version: (.*)$/, 1]).to include("20210101")
     # --no-bundler --no-autoproj: this workspace was not made by autoproj's
     # bootstrap, which the update of autoproj itself needs
-    expect(autoproj!("update", "--no-bundler", "--no-autoproj")).to include("relspec: apt-get update for #{SOURCE_LISTS['demo-base']}")
+    update = autoproj!("update", "--no-bundler", "--no-autoproj")
+    expect(update).to include("relspec: apt-get update for #{SOURCE_LISTS['demo-base']}")
+    expect(update).to include("relspec: apt-get install --only-upgrade for 7 packages")
     autoproj!("osdeps")
     expect(installed_version("rock-demo-base-tools-legacy")).not_to eq(before)
     expect(installed_version("rock-demo-base-tools-legacy")).to include("20210101")

@@ -57,6 +57,7 @@ module RelspecPackageSet
                                         File.join(@dir, "state", "relspec.osdeps"))
       )
       sources.install(refresh: updating?)
+      sources.upgrade(selection.active.values.uniq.sort) if updating?
       environment.apply(@ws.env)
       Autoproj.message "  relspec: #{release} for #{system}: #{selection.active.size} binary packages, " \
                        "#{selection.inactive.size} built from source"
@@ -288,6 +289,26 @@ module RelspecPackageSet
       end
       outdated = refresh ? @releases : @releases.reject { |release| updated?(release) }
       update(@releases.select { |release| stale.include?(release) || outdated.include?(release) })
+    end
+
+    # The active packages installed here brought to the versions apt now
+    # has (`autoproj update`): autoproj's own check compares the last
+    # version `apt-cache show` prints, the installed one, and never
+    # upgrades a republished package. Names are Trust-checked, and follow
+    # `--`, so apt reads none of them as an option.
+    def upgrade(debs)
+      return if debs.empty?
+
+      status, = Open3.capture2("dpkg-query", "-W", "-f", "${db:Status-Status} ${Package}\n", "--", *debs,
+                               err: File::NULL)
+      installed = status.lines.filter_map { |line| line.split[1] if line.start_with?("installed ") }
+      return if installed.empty?
+
+      Autoproj.message "  relspec: apt-get install --only-upgrade for #{installed.size} packages"
+      command = ["env", "DEBIAN_FRONTEND=noninteractive", "timeout", DEADLINE.to_s, "apt-get", "install", "-y", "-q",
+                 "--only-upgrade", "--", *installed]
+      command.unshift("sudo") unless Process.uid.zero?
+      run(*command)
     end
 
     private
