@@ -11,8 +11,10 @@ module Relspec
 
     # Writes only when the content differs, so an unchanged output keeps
     # its mtime (and make-like tools see nothing to do). True if written.
+    # Bytes against bytes: a UTF-8 string with non-ASCII text never equals
+    # the binary read of the same file.
     def update(path, content)
-      return false if File.file?(path) && File.binread(path) == content
+      return false if File.file?(path) && File.binread(path) == content.b
 
       write(path, content)
       true

@@ -26,6 +26,19 @@ class MachineApt
     output.lines.filter_map { |line| line.split.first if line.split.last == "installed" }.sort
   end
 
+  # How this machine's apt sources and keyrings differ, byte for byte,
+  # from #initialize's, and the lists of 127.0.0.1 repositories apt holds
+  # that it did not hold then: ["added PATH", "changed PATH", "removed
+  # PATH", "list NAME"].
+  def changes
+    @config.flat_map do |dir, files|
+      current = snapshot(dir)
+      (current.keys - files.keys).map { |path| "added #{path}" } +
+        (files.keys - current.keys).map { |path| "removed #{path}" } +
+        (files.keys & current.keys).reject { |path| files[path] == current[path] }.map { |path| "changed #{path}" }
+    end.sort + (Dir.children(LISTS) - @lists).grep(/\A127\.0\.0\.1/).sort.map { |name| "list #{name}" }
+  end
+
   def restore
     installed.then do |names|
       output, status = Open3.capture2e({ "DEBIAN_FRONTEND" => "noninteractive" }, "apt-get", "purge", "-y", "-q", *names)

@@ -66,7 +66,8 @@ module Relspec
         --specs, from their published repositories: users add it to their manifest,
         choose a release in autoproj/relspec.yml, and autoproj installs the release's
         binaries with apt instead of building those packages (docs/releasing.md).
-        The folder is replaced as a whole, and only when its content changes.
+        Only relspec's files in --out change, each only when its bytes do: .git and
+        other files beside lib/ and data/ stay (a git checkout keeps its history).
       TEXT
       option :specs, type: :string, default: "specs", desc: "The folder of release specs"
       option :out, type: :string, default: "build/package-set", desc: "The package set's folder"
@@ -75,8 +76,9 @@ module Relspec
         require_relative "../osdeps/package_set"
         require_relative "../osdeps/package_set_writer"
         files = Osdeps::PackageSet.assemble(indexed_releases(spec_library))
-        changed = Osdeps::PackageSetWriter.write(options[:out], files)
-        $stderr.puts("#{changed ? 'wrote' : 'unchanged'} #{options[:out]} (#{files.size} files)")
+        result = Osdeps::PackageSetWriter.write(options[:out], files)
+        summary = "#{result.written.size} of #{files.size} files written, #{result.removed.size} removed"
+        $stderr.puts(result.changed? ? "wrote #{options[:out]} (#{summary})" : "unchanged #{options[:out]} (#{files.size} files)")
       end
       map "package-set" => :package_set
 

@@ -1,12 +1,15 @@
 # frozen_string_literal: true
 
+require "yaml"
 require_relative "../yaml/writer"
 require_relative "../apt/package_index"
 require_relative "../diagnostic"
 require_relative "../error"
 require_relative "../display_path"
+require_relative "../location"
 require_relative "index_check"
 require_relative "release_index"
+require_relative "trust"
 
 module Relspec
   module Osdeps
@@ -89,16 +92,45 @@ module Relspec
                                                         "(repository.keyring) nor trusted: true: apt would refuse it",
                                    location: location)]
         end
-        release.targets.sort.flat_map do |codename, archs|
-          archs.sort.filter_map do |arch|
-            next if File.file?(packages_path(release, codename, arch)) &&
-                    File.file?(File.join(release.repository_path, "osdeps", "#{release.name}-#{arch}.yml"))
+        if (problem = Trust.release_name(release.name) || Trust.url(release.url))
+          return [Diagnostic.error("package-set-trust", "#{release.name}: #{problem}", location: location)]
+        end
 
-            Diagnostic.error("package-set-unpublished", "#{release.name} is not published for #{codename}/#{arch} " \
-                                                        "in #{DisplayPath.of(release.repository_path)}",
-                             location: location, hint: "run `relspec publish` for it first")
+        release.targets.sort.flat_map do |codename, archs|
+          archs.sort.flat_map do |arch|
+            osdeps = File.join(release.repository_path, "osdeps", "#{release.name}-#{arch}.yml")
+            next osdeps_problems(osdeps) if File.file?(packages_path(release, codename, arch)) && File.file?(osdeps)
+
+            [Diagnostic.error("package-set-unpublished", "#{release.name} is not published for #{codename}/#{arch} " \
+                                                         "in #{DisplayPath.of(release.repository_path)}",
+                              location: location, hint: "run `relspec publish` for it first")]
           end
         end
+      end
+
+      # An osdeps file of a repository is data from a web server's folder
+      # that users' autoproj hands to `apt-get install` as root: each entry
+      # must be {type => {labels => Debian package name}}.
+      def osdeps_problems(path)
+        location = Location.file_only(DisplayPath.of(path))
+        data = YAML.safe_load(File.read(path))
+        unless data.is_a?(Hash)
+          return [Diagnostic.error("package-set-osdeps", "is not a mapping of packages", location: location)]
+        end
+
+        data.sort_by { |package, _| package.to_s }.filter_map do |package, entry|
+          next unless (problem = osdeps_entry_problem(entry))
+
+          Diagnostic.error("package-set-osdeps", "#{package}: #{problem}", location: location)
+        end
+      rescue Psych::Exception => e
+        [Diagnostic.error("package-set-osdeps", "is not plain YAML (#{e.message})", location: location)]
+      end
+
+      def osdeps_entry_problem(entry)
+        return "is not a mapping of OS types" unless entry.is_a?(Hash) && entry.values.all?(Hash)
+
+        entry.values.flat_map(&:values).filter_map { |deb| Trust.debian_name(deb) }.first
       end
 
       # The relspec files init.rb needs, paths relative to lib/: the

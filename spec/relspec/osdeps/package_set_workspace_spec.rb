@@ -19,7 +19,7 @@ RSpec.describe "an autoproj workspace using relspec's package set" do
   RELEASE_DEBS = %w[rock-demo-base-base-cmake rock-demo-base-base-logging rock-demo-base-data-models
                     rock-demo-base-tools-legacy rock-demo-child-base-types rock-demo-child-drivers-iodrivers-base
                     rock-demo-child-ruby-tools-orocos.rb].freeze
-  SOURCE_LIST = "/etc/apt/sources.list.d/relspec.list"
+  SOURCE_LISTS = %w[demo-base demo-child].to_h { |release| [release, "/etc/apt/sources.list.d/relspec-#{release}.list"] }
 
   before(:all) do
     raise "this test installs packages with apt on this machine: run it as root (CI does)" unless Process.uid.zero?
@@ -98,7 +98,7 @@ RSpec.describe "an autoproj workspace using relspec's package set" do
 
   def run!(*args)
     run = relspec(*args, chdir: @dir, env: @key.env)
-    raise "relspec #{args.join(' ')}: #{run.stderr}" unless run.status.success?
+    raise "relspec #{args.join(' ')}: #{run.stdout}#{run.stderr}" unless run.status.success?
 
     run
   end
@@ -117,8 +117,8 @@ RSpec.describe "an autoproj workspace using relspec's package set" do
     return output if status.success?
 
     lists = Dir.glob("/var/lib/apt/lists/127.0.0.1*").map { |path| File.basename(path) }
-    raise "autoproj #{args.join(' ')} failed:\n#{output}\n#{SOURCE_LIST}: #{File.exist?(SOURCE_LIST) && File.read(SOURCE_LIST)}\n" \
-          "apt lists of 127.0.0.1: #{lists}"
+    sources = SOURCE_LISTS.values.map { |path| "#{path}: #{File.exist?(path) && File.read(path)}" }.join("\n")
+    raise "autoproj #{args.join(' ')} failed:\n#{output}\n#{sources}\napt lists of 127.0.0.1: #{lists}"
   end
 
   def blacklist(entries)
@@ -134,10 +134,10 @@ RSpec.describe "an autoproj workspace using relspec's package set" do
     blacklist(nil)
     autoproj!("osdeps")
     expect(@machine.installed).to eq(RELEASE_DEBS)
-    expect(File.read(SOURCE_LIST)).to eq(
-      "# written by relspec's autoproj package set\n" \
-      "deb [signed-by=/etc/apt/keyrings/relspec-demo-base.gpg] #{@url}/demo-base bookworm main\n" \
-      "deb [trusted=yes] #{@url}/demo-child bookworm main\n"
+    expect(SOURCE_LISTS.transform_values { |path| File.read(path) }).to eq(
+      "demo-base" => "# written by relspec's autoproj package set\n" \
+                     "deb [signed-by=/etc/apt/keyrings/relspec-demo-base.gpg] #{@url}/demo-base bookworm main\n",
+      "demo-child" => "# written by relspec's autoproj package set\ndeb [trusted=yes] #{@url}/demo-child bookworm main\n"
     )
     # apt took base/cmake from demo-base's repository
     policy, = Open3.capture2("apt-cache", "policy", "rock-demo-base-base-cmake")
@@ -179,14 +179,105 @@ RSpec.describe "an autoproj workspace using relspec's package set" do
     in_release = File.join(@repos, "demo-base", "dists", "bookworm", "InRelease")
     original = File.binread(in_release)
     File.binwrite(in_release, original.sub("Codename: bookworm", "Codename: bookworn"))
-    FileUtils.rm_f(SOURCE_LIST) # a machine that has not seen the release yet
+    FileUtils.rm_f(SOURCE_LISTS.values) # a machine that has not seen the release yet
     output, status = autoproj("osdeps")
     expect(status.success?).to be(false)
-    expect(output).to include("relspec package set: apt-get update")
+    expect(output).to include("relspec package set: timeout 300 apt-get update")
     expect(output).to include("The following signatures were invalid: BADSIG")
+    # the failed update is tried again by the next run, which succeeds
+    # once the repository is right again
+    File.binwrite(in_release, original)
+    autoproj!("osdeps")
   ensure
     File.binwrite(in_release, original) if original
-    FileUtils.rm_f(SOURCE_LIST) # the next run updates apt's lists again
+  end
+
+  # The maintainer republishes tools/legacy (a new commit, compiled, built
+  # and published into demo-base's repository; the package set does not
+  # change): the user's next `autoproj update` refreshes apt's lists of the
+  # release, and `autoproj osdeps` installs the new version.
+  it "brings a republished package with autoproj update and autoproj osdeps" do
+    autoproj!("osdeps")
+    before = installed_version("rock-demo-base-tools-legacy")
+    upstream = File.join(@workspace, "repositories", "tools", "legacy.git")
+    File.write(File.join(upstream, "NEWS"), "republished\n")
+    GitProject.commit_all(upstream, "tools/legacy: NEWS")
+    GitProject.git(File.join(@workspace, "src", "tools", "legacy"), "pull", "--quiet", "--ff-only", "autobuild", "master")
+    # the maintainer's workspace: this one without the users' package set
+    manifest = File.join(@workspace, "autoproj", "manifest")
+    users = File.read(manifest)
+    data = YAML.safe_load(users)
+    data["package_sets"].pop
+    File.write(manifest, YAML.dump(data))
+    %w[compile build publish].each do |command|
+      run!(command, "specs/demo-base.yml", *(command == "build" ? %w[--backend host --jobs 2] : []))
+    end
+    File.write(manifest, users)
+    packages = File.read(File.join(@repos, "demo-base", "dists", "bookworm", "main", "binary-amd64", "Packages"))
+    expect(packages[/^Package: rock-demo-base-tools-legacy\n(?:.+\n)*?Version: (.*)$/, 1]).to include("20210101")
+    # --no-bundler --no-autoproj: this workspace was not made by autoproj's
+    # bootstrap, which the update of autoproj itself needs
+    update = autoproj!("update", "--no-bundler", "--no-autoproj")
+    expect(update).to include("relspec: apt-get update for #{SOURCE_LISTS['demo-base']}")
+    expect(update).to include("relspec: apt-get install --only-upgrade for 7 packages")
+    autoproj!("osdeps")
+    expect(installed_version("rock-demo-base-tools-legacy")).not_to eq(before)
+    expect(installed_version("rock-demo-base-tools-legacy")).to include("20210101")
+  ensure
+    File.write(manifest, users) if users
+  end
+
+  def installed_version(deb)
+    Open3.capture2("dpkg-query", "-W", "-f", "${Version}", deb).first
+  end
+
+  # Another workspace of the machine on demo-base (this workspace switched
+  # to it, as that one would choose it): its source is demo-base's own
+  # file, the one demo-child's workspace shares; demo-child's stays.
+  it "lets workspaces on different releases share the machine" do
+    autoproj!("osdeps")
+    child = SOURCE_LISTS.transform_values { |path| File.read(path) }
+    checkout = Dir.glob(File.join(@workspace, ".autoproj", "remotes", "*")).first
+    # each apt-get update of a release rewrites its marker
+    markers = -> { %w[demo-base demo-child].map { |release| File.mtime(File.join(checkout, "state", "apt", release)) } }
+    updated = markers.call
+    relspec_yml = File.join(@workspace, "autoproj", "relspec.yml")
+    File.write(relspec_yml, "release: demo-base\n")
+    autoproj!("show", "base/types") # init.rb runs; nothing is installed
+    expect(File.read(File.join(checkout, "state", "release"))).to eq("demo-base\n")
+    expect(SOURCE_LISTS.transform_values { |path| File.read(path) }).to eq(child)
+    File.write(relspec_yml, "release: demo-child\n")
+    autoproj!("show", "base/types")
+    expect(markers.call).to eq(updated) # nothing new for apt: no apt-get update
+  ensure
+    File.write(relspec_yml, "release: demo-child\n") if relspec_yml
+  end
+
+  # docs/releasing.md's removal, run as written there; then the machine is
+  # one that never saw the releases, and a first run while the repository
+  # server is down (here: its folder is gone, apt gets 404) once left the
+  # workspace stuck with "Unable to locate package" until a manual apt-get
+  # update (issue 33): the next run, with the server back, installs.
+  it "is removed by the documented commands, leaving /etc/apt as before; a first run with the server down is retried" do
+    autoproj!("osdeps")
+    expect(@machine.installed).to eq(RELEASE_DEBS)
+    script = File.read(File.join(CliRunner::ROOT, "docs", "releasing.md"))[/<!-- removal -->\n```sh\n(.*?)```/m, 1]
+    output, status = Open3.capture2e("bash", "-euc", script, chdir: @workspace)
+    expect(status.success?).to be(true), output
+    expect(@machine.installed).to eq([])
+    expect(@machine.changes).to eq([])
+
+    FileUtils.mv(File.join(@repos, "demo-child"), File.join(@repos, "demo-child.down"))
+    output, status = autoproj("osdeps")
+    expect(status.success?).to be(false)
+    expect(output).to include("relspec package set: timeout 300 apt-get update -o Dir::Etc::sourcelist=#{SOURCE_LISTS['demo-child']}")
+    expect(output).to include("the next autoproj run tries again")
+    expect(@machine.installed).to eq([])
+    FileUtils.mv(File.join(@repos, "demo-child.down"), File.join(@repos, "demo-child"))
+    autoproj!("osdeps")
+    expect(@machine.installed).to eq(RELEASE_DEBS)
+  ensure
+    FileUtils.mv(File.join(@repos, "demo-child.down"), File.join(@repos, "demo-child")) if File.exist?(File.join(@repos, "demo-child.down"))
   end
 
   it "stops with a clear message when autoproj/relspec.yml names a release the package set does not have" do
@@ -194,8 +285,8 @@ RSpec.describe "an autoproj workspace using relspec's package set" do
     File.write(relspec_yml, "release: demo-nope\n")
     output, status = autoproj("show", "base/types")
     expect(status.success?).to be(false)
-    expect(output).to include("relspec package set: #{relspec_yml} chooses the release \"demo-nope\", which this " \
-                              "package set does not have (it has demo-base, demo-child)")
+    expect(output).to include("relspec package set: #{relspec_yml}: release: \"demo-nope\" is not a release of this " \
+                              "package set, expected `release: <name>` (one of demo-base, demo-child)")
   ensure
     File.write(relspec_yml, "release: demo-child\n")
   end
