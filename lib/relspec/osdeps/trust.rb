@@ -31,9 +31,15 @@ module Relspec
       # and the search paths Rock's package sets add. Anything else
       # (LD_PRELOAD, RUBYOPT, BASH_ENV, …) would run code in every process
       # of the workspace. docs/releasing.md lists them.
-      PATH_VARIABLES = %w[CMAKE_PREFIX_PATH GEM_PATH LD_LIBRARY_PATH OROGEN_PLUGIN_PATH PATH PKG_CONFIG_PATH
-                          PYTHONPATH RTT_COMPONENT_PATH RUBYLIB TYPELIB_PLUGIN_PATH TYPELIB_RUBY_PLUGIN_PATH
+      PATH_VARIABLES = %w[CMAKE_PREFIX_PATH GEM_PATH LD_LIBRARY_PATH OROGEN_PLUGIN_PATH OSG_FILE_PATH
+                          OWLAPI_ONTOLOGIES_PATH PATH PKG_CONFIG_PATH PYTHONPATH QT_PLUGIN_PATH ROCK_BUNDLE_PATH
+                          RTT_COMPONENT_PATH RUBYLIB TYPELIB_PLUGIN_PATH TYPELIB_RUBY_PLUGIN_PATH
                           VIZKIT_PLUGIN_RUBY_PATH].freeze
+      # Settings the real Rock package sets give a package (orocos.toolchain:
+      # typelib's importer, RTT's target; rock.core: orocos.rb's name
+      # service), each value one plain word: no path to run, no shell syntax.
+      WORD_VARIABLES = %w[ORBInitRef OROCOS_TARGET TYPELIB_CXX_LOADER].freeze
+      WORD = %r{\A[A-Za-z0-9_.:=/-]{1,200}\z}
       ENVIRONMENT_TYPES = %i[add_path add set].freeze
 
       module_function
@@ -86,13 +92,23 @@ module Relspec
 
       # One variable of an env.yml: +entry+ {type:, values:, priority:}.
       def environment(name, entry)
-        return "#{name.inspect} is not a variable the package set lets a package change" unless PATH_VARIABLES.include?(name)
+        word = WORD_VARIABLES.include?(name)
+        return "#{name.inspect} is not a variable the package set lets a package change" unless word || PATH_VARIABLES.include?(name)
         return "#{name}: is not a mapping of type and values" unless entry.is_a?(Hash)
         return "#{name}: the type #{entry[:type].inspect} is not one of add_path, add, set" unless ENVIRONMENT_TYPES.include?(entry[:type])
 
         values = entry[:values].is_a?(Array) ? entry[:values] : [entry[:values]]
+        return word_values(name, entry, values) if word
+
         bad = values.find { |value| !below_prefix?(value) }
         bad.nil? ? nil : "#{name}: #{bad.inspect} is not a path below #{PREFIX}"
+      end
+
+      def word_values(name, entry, values)
+        return "#{name}: is set (one word), not added to" unless entry[:type] == :set && values.size == 1
+        return nil if values.first.is_a?(String) && WORD.match?(values.first)
+
+        "#{name}: #{values.first.inspect} is not one plain word"
       end
 
       def below_prefix?(value)

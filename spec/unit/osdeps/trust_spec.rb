@@ -67,6 +67,25 @@ RSpec.describe Relspec::Osdeps::Trust do
     end
   end
 
+  describe ".environment of the settings the real Rock package sets give packages" do
+    it "accepts one plain word set (typelib's importer, RTT's target, orocos.rb's name service)" do
+      expect(described_class.environment("TYPELIB_CXX_LOADER", { type: :set, values: ["castxml"] })).to be_nil
+      expect(described_class.environment("OROCOS_TARGET", { type: :set, values: "gnulinux" })).to be_nil
+      expect(described_class.environment("ORBInitRef", { type: :set, values: ["NameService=corbaname::127.0.0.1"] }))
+        .to be_nil
+      expect(described_class.environment("QT_PLUGIN_PATH", { type: :add_path, values: ["/opt/rock/r/p/lib/qt"] })).to be_nil
+    end
+
+    it "refuses shell syntax, several words, or adding to them" do
+      ["castxml; reboot", "a b", "$(id)", "", "x\ny"].each do |value|
+        expect(described_class.environment("TYPELIB_CXX_LOADER", { type: :set, values: [value] }))
+          .to include("is not one plain word"), value.inspect
+      end
+      expect(described_class.environment("OROCOS_TARGET", { type: :add, values: ["gnulinux"] }))
+        .to eq("OROCOS_TARGET: is set (one word), not added to")
+    end
+  end
+
   describe ".environment_file" do
     it "refuses a file whose real path is outside the prefix" do
       Dir.mktmpdir do |dir|
