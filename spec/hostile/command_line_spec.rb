@@ -14,8 +14,8 @@ RSpec.describe "relspec on a command line it does not know", :tmpdir do
     %w[osdeps package-sett x] => 'relspec osdeps has no command "package-sett" (commands: help, index, package-set, render, ' \
                                  'select, tree); did you mean "package-set"?',
     %w[catalog shwo x] => 'relspec catalog has no command "shwo" (commands: export, help, show, tree); did you mean "show"?',
-    %w[publsh x] => 'relspec has no command "publsh" (commands: build, catalog, check, compile, diff, help, osdeps, ' \
-                    'plan, publish, show, tree, validate, version, why); did you mean "publish"?',
+    %w[publsh x] => 'relspec has no command "publsh" (commands: abi, build, catalog, check, compile, diff, help, mirror, ' \
+                    'osdeps, plan, publish, report, show, tree, validate, version, why); did you mean "publish"?',
     %w[build x.yml --jbos 2] => 'unknown option --jbos; did you mean "--jobs"?',
     %w[diff --bsae main] => 'unknown option --bsae; did you mean "--base"?',
     %w[osdeps render x.yml --from-repo] => 'unknown option --from-repo; did you mean "--from-repository"?',
