@@ -28,9 +28,10 @@ class BuildRelease
 
   # +cmake+: CMake code of a cmake package (configured, built and installed
   # by dh); without it, an import package.
-  # +osdeps+: OS dependencies (names of #osdeps).
-  def package(name, dependencies: [], cmake: nil, osdeps: [])
-    files = { "#{name.tr('/', '-')}.txt" => "#{name}\n" }
+  # +osdeps+: OS dependencies (names of #osdeps); +files+: more source
+  # files (path => content).
+  def package(name, dependencies: [], cmake: nil, osdeps: [], files: {})
+    files = files.merge("#{name.tr('/', '-')}.txt" => "#{name}\n")
     if cmake
       files["CMakeLists.txt"] = "cmake_minimum_required(VERSION 3.10)\nproject(p NONE)\n#{cmake}\n" \
                                 "install(FILES #{name.tr('/', '-')}.txt DESTINATION share)\n"
