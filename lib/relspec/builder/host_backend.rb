@@ -57,7 +57,7 @@ module Relspec
             add_shlibs(tree, local, request.log)
             command = overlay(request, work, local) + command
           end
-          @tool.run(request.source, command, log: request.log, chdir: tree)
+          @tool.run(request.source, command, log: request.log, chdir: tree, name: "dpkg-buildpackage")
           ProducedFiles.collect(work, request.output_dir)
         end
       end
