@@ -91,6 +91,8 @@ module Relspec
       rescue Interrupt
         @tool.stop_all
         raise
+      ensure
+        backend&.finish
       end
 
       private

@@ -46,6 +46,9 @@ module Relspec
       # Nothing to prepare: the machine is the build environment.
       def prepare(_target, log: nil); end
 
+      # Nothing to clean up after a run either.
+      def finish; end
+
       def build(request)
         Dir.mktmpdir("relspec-host-build") do |work|
           tree = File.join(work, "source")
