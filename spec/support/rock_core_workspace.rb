@@ -4,8 +4,7 @@ require "fileutils"
 require "open3"
 require "rbconfig"
 require "yaml"
-require_relative "fixture_workspace"
-require "autoproj"
+require_relative "real_rock_workspace"
 
 # The offline workspace of the real buildconf (rock-core/buildconf): its
 # package sets rock.core (importing orocos.toolchain) and rock, its layout
@@ -21,9 +20,7 @@ require "autoproj"
 # The tutorials package set of the buildconf's manifest is not in ../shared,
 # and the layout does not use it: it is left out, as a maintainer without
 # network would.
-class RockCoreWorkspace
-  include FixtureWorkspace
-
+class RockCoreWorkspace < RealRockWorkspace
   EXE = File.expand_path("../../exe/relspec", __dir__)
   PACKAGE_SETS = {
     "rock-core/package_set" => "rock-core-package_set", "rock-core/rock-package_set" => "rock-package_set",
@@ -42,7 +39,7 @@ class RockCoreWorkspace
     overrides = File.join(root, "autoproj", "overrides.yml")
     return YAML.safe_load_file(overrides).fetch("overrides").flat_map(&:keys) if File.file?(overrides)
 
-    write_configuration
+    write_configuration(PACKAGE_SETS.keys.first(2))
     PACKAGE_SETS.each do |github, bundle|
       dir = remote_dir(github)
       git("clone", "-q", File.join(BUNDLES, "#{bundle}.bundle"), dir) unless File.directory?(dir)
@@ -66,29 +63,6 @@ class RockCoreWorkspace
 
   private
 
-  def write_configuration
-    write(".autoproj/config.yml", <<~YAML)
-      source: src
-      osdeps_mode: all
-      apt_dpkg_update: false
-      interactive: false
-      USE_OCL: false
-      ROCK_SELECTED_FLAVOR: master
-    YAML
-    write("autoproj/manifest", <<~YAML)
-      package_sets:
-        - github: rock-core/package_set
-        - github: rock-core/rock-package_set
-      layout:
-        - rock.core
-    YAML
-    write("autoproj/init.rb", "require 'autoproj/git_server_configuration'\n")
-    # orocos.toolchain defines ruby-dev for Ruby 3.0 and 3.2 but not for
-    # bookworm's 3.1 (see RealRockWorkspace): the maintainer adds it
-    write("autoproj/workspace.osdeps", "{}\n")
-    write("autoproj/workspace.osdeps-ruby31", "ruby-dev:\n  default: ignore\n")
-  end
-
   # Every package the package sets define: name => snapshot entry.
   def catalog
     output, errors, status = Open3.capture3(RbConfig.ruby, EXE, "catalog", "export", root)
@@ -102,26 +76,6 @@ class RockCoreWorkspace
     name = File.basename(url, ".git")
     path = File.join(BUNDLES, "#{BUNDLE_NAMES.fetch(name, name)}.bundle")
     !name.empty? && File.file?(path) ? path : nil
-  end
-
-  def repository(name)
-    File.join(root, "repositories", "#{name.tr('/', '_')}.git")
-  end
-
-  def override(name)
-    "  - #{name}:\n      type: git\n      url: $AUTOPROJ_ROOT/repositories/#{name.tr('/', '_')}.git\n"
-  end
-
-  def remote_dir(github)
-    vcs = Autoproj::VCSDefinition.from_raw({ type: "git", url: "https://github.com/#{github}.git",
-                                             repository_id: "github:/#{github}.git" })
-    File.join(root, ".autoproj", "remotes", vcs.create_autobuild_importer.repository_id.gsub(/[^\w]/, "_"))
-  end
-
-  def git(*args)
-    output, status = Open3.capture2e({ "GIT_CONFIG_NOSYSTEM" => "1", "GIT_CONFIG_GLOBAL" => File::NULL },
-                                     "git", *args, chdir: root)
-    raise "git #{args.join(' ')} failed: #{output}" unless status.success?
   end
 end
 
