@@ -89,9 +89,11 @@ Dir.mktmpdir("relspec-bench-sbuild") do |dir|
 
   log = File.read(File.join(release.target_dir, "logs", "#{release.source('base/small')}.log"))
   command = log.lines.first.delete_prefix("$ ").split
-  tmpfs = Relspec::Builder::UnpackDir.new.environment
+  unpack_dir = Relspec::Builder::UnpackDir.new
+  tmpfs = unpack_dir.environment
   puts "sbuild alone, its phases (seconds):"
   row("now#{tmpfs.empty? ? ' (no room on tmpfs)' : ', chroot on tmpfs'}", *timed_sbuild(command, tmpfs))
+  unpack_dir.close
   row("now, chroot on disk", *timed_sbuild(command, {}))
 
   old = File.join(dir, "before.tar.zst")
