@@ -1,5 +1,6 @@
 # frozen_string_literal: true
 
+require "digest"
 require "fileutils"
 require_relative "release_spec"
 require_relative "error"
@@ -93,6 +94,8 @@ module Relspec
       rescue Interrupt
         @tool.stop_all
         raise
+      ensure
+        backend&.finish
       end
 
       private
@@ -127,18 +130,21 @@ module Relspec
       end
 
       def build_target(target, dir, plan, backend, repositories, prepared)
+        # Records of packages the plan does not build now stay in the file
+        # (a narrowed selection widened again builds nothing twice).
         results = BuildResults.load(dir, release: @effective.release, target: target)
-        results.keep_only(plan.entries.map(&:source))
+        digests = dsc_digests(plan)
         # A package built by another backend (a host build after sbuild ones)
         # is not what this run would build: built again.
         reuse = !@rebuild && results.backend == backend.name
-        done = reuse ? plan.entries.select { |entry| results.built?(entry.source, entry.version) }.map(&:source) : []
+        done = reuse ? plan.entries.select { |entry| results.built?(entry.source, entry.version, digests[entry.source]) } : []
+        done = done.map(&:source)
         @listener&.start(target, plan.entries.size, done.size)
         local = Mutex.new
         debs = done.flat_map { |source| debs_of(dir, results[source]) }
         on_start = ->(entry) { @listener&.building(entry) }
         on_done = lambda do |outcome|
-          record(results, dir, outcome)
+          record(results, dir, outcome, digests[outcome.entry.source])
           results.write(backend: backend.name)
           @listener&.finished(outcome)
         end
@@ -158,8 +164,18 @@ module Relspec
                      end
                    end
         results.write(backend: backend.name) if outcomes.empty?
-        TargetReport.new(target: target, dir: dir, results: results, outcomes: outcomes, reused: done.size,
-                         prepared: prepared)
+        TargetReport.new(target: target, dir: dir, results: results.within(plan.entries.map(&:source)),
+                         outcomes: outcomes, reused: done.size, prepared: prepared)
+      end
+
+      # The SHA256 of each planned .dsc: a record counts only for the exact
+      # source package it was built from (nil when the .dsc is missing: the
+      # build says so).
+      def dsc_digests(plan)
+        plan.entries.to_h do |entry|
+          path = plan.dsc_path(entry)
+          [entry.source, File.file?(path) ? Digest::SHA256.file(path).hexdigest : nil]
+        end
       end
 
       def request_for(plan, entry, target, repositories, debs, dir)
@@ -171,12 +187,13 @@ module Relspec
                     target: target, repositories: repositories, local_debs: debs, output_dir: output_dir, log: log)
       end
 
-      def record(results, dir, outcome)
+      def record(results, dir, outcome, dsc_sha256)
         entry = outcome.entry
         started = outcome.status != :skipped
         files = outcome.status == :built ? outcome.value.map { |file| BuildResults::Produced.of(dir, relative(dir, file)) } : []
         results.record(BuildResults::Record.new(
-                         source: entry.source, package: entry.package, version: entry.version, status: outcome.status.to_s,
+                         source: entry.source, package: entry.package, version: entry.version, dsc_sha256: dsc_sha256,
+                         status: outcome.status.to_s,
                          duration: started ? outcome.duration : nil, log: started ? "logs/#{entry.source}.log" : nil,
                          reason: outcome.reason&.gsub("#{dir}/", ""), files: files.freeze
                        ))

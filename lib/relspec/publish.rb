@@ -8,6 +8,7 @@ require_relative "atomic_file"
 require_relative "diagnostic"
 require_relative "osdeps/files"
 require_relative "output_tree"
+require_relative "builder/build_plan"
 require_relative "builder/build_results"
 require_relative "builder/target_lock"
 require_relative "publish/repository_config"
@@ -134,12 +135,17 @@ module Relspec
                                             location: location, hint: "add `repository: { path: <reprepro base directory> }`")]
     end
 
-    # The target's results, nil when it has none (an error when the user
-    # asked for that target).
+    # The target's results of the packages its plan.yml builds, nil when it
+    # has none (an error when the user asked for that target). The file
+    # also keeps the records of packages an earlier, wider plan built.
     def self.read_results(tree, target, explicit:)
       path = tree.results_file(target)
       release = tree.release
-      return Builder::BuildResults.read(path, release: release, target: target) if File.exist?(path)
+      if File.exist?(path)
+        results = Builder::BuildResults.read(path, release: release, target: target)
+        plan = Builder::BuildPlan.read(File.dirname(path))
+        return results.within(plan.entries.map(&:source))
+      end
       raise PublishError, "#{target} of #{release} has not been built: #{path} does not exist (run relspec build)" if explicit
 
       nil

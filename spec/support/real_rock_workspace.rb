@@ -62,29 +62,7 @@ class RealRockWorkspace
   end
 
   def create
-    write(".autoproj/config.yml", <<~YAML)
-      source: src
-      osdeps_mode: all
-      apt_dpkg_update: false
-      interactive: false
-      USE_OCL: false
-      ROCK_SELECTED_FLAVOR: master
-    YAML
-    write("autoproj/manifest", <<~YAML)
-      package_sets:
-        - github: rock-core/package_set
-      layout:
-        - rock.core
-    YAML
-    # as rock-core/buildconf's init.rb: the `github:` shorthand of the manifest
-    write("autoproj/init.rb", "require 'autoproj/git_server_configuration'\n")
-    # orocos.toolchain defines ruby-dev in orocos.osdeps-ruby30 and -ruby32
-    # (as `ignore`) but has no -ruby31 file: on bookworm's Ruby autoproj
-    # stops at binding_of_caller's ruby-dev. A Rock maintainer adds the
-    # missing definition in the workspace configuration, as here.
-    # (autoproj reads <name>.osdeps-ruby31 beside an existing <name>.osdeps)
-    write("autoproj/workspace.osdeps", "{}\n")
-    write("autoproj/workspace.osdeps-ruby31", "ruby-dev:\n  default: ignore\n")
+    write_configuration(["rock-core/package_set"])
     write("autoproj/overrides.yml", overrides)
     # ../shared has no SISL (external/sisl is left out where these are
     # built); base/types' CMake stops unless told to do without, so the
@@ -104,6 +82,30 @@ class RealRockWorkspace
 
   private
 
+  # .autoproj/config.yml and autoproj/ as rock-core/buildconf has them:
+  # the manifest loads +package_sets+ (GitHub names) and lays out rock.core.
+  def write_configuration(package_sets)
+    write(".autoproj/config.yml", <<~YAML)
+      source: src
+      osdeps_mode: all
+      apt_dpkg_update: false
+      interactive: false
+      USE_OCL: false
+      ROCK_SELECTED_FLAVOR: master
+    YAML
+    sets = package_sets.map { |github| "  - github: #{github}\n" }.join
+    write("autoproj/manifest", "package_sets:\n#{sets}layout:\n  - rock.core\n")
+    # as rock-core/buildconf's init.rb: the `github:` shorthand of the manifest
+    write("autoproj/init.rb", "require 'autoproj/git_server_configuration'\n")
+    # orocos.toolchain defines ruby-dev in orocos.osdeps-ruby30 and -ruby32
+    # (as `ignore`) but has no -ruby31 file: on bookworm's Ruby autoproj
+    # stops at binding_of_caller's ruby-dev. A Rock maintainer adds the
+    # missing definition in the workspace configuration, as here.
+    # (autoproj reads <name>.osdeps-ruby31 beside an existing <name>.osdeps)
+    write("autoproj/workspace.osdeps", "{}\n")
+    write("autoproj/workspace.osdeps-ruby31", "ruby-dev:\n  default: ignore\n")
+  end
+
   # Where autoproj looks for a remote package set it has checked out:
   # .autoproj/remotes/<repository id with non-word characters as _>, the id
   # autoproj's GITHUB server configuration gives (`github:/<owner>/<name>.git`).
@@ -118,10 +120,12 @@ class RealRockWorkspace
   end
 
   def overrides
-    entries = PACKAGES.keys.map do |name|
-      "  - #{name}:\n      type: git\n      url: $AUTOPROJ_ROOT/repositories/#{name.tr('/', '_')}.git\n"
-    end
-    "overrides:\n#{entries.join}"
+    "overrides:\n#{PACKAGES.keys.map { |name| override(name) }.join}"
+  end
+
+  # autoproj/overrides.yml's entry pointing +name+ at its repository here.
+  def override(name)
+    "  - #{name}:\n      type: git\n      url: $AUTOPROJ_ROOT/repositories/#{name.tr('/', '_')}.git\n"
   end
 
   def git(*args)

@@ -25,7 +25,7 @@ module Relspec
       FORMAT_KEY = "relspec_build_results"
       FORMAT_VERSION = 1
       ROOT_KEYS = [FORMAT_KEY, "release", "target", "backend", "packages"].freeze
-      PACKAGE_KEYS = %w[package version status duration log reason files].freeze
+      PACKAGE_KEYS = %w[package version dsc_sha256 status duration log reason files].freeze
       FILE_KEYS = %w[name sha256 size].freeze
       STATUSES = %w[built failed skipped published].freeze
       SHA256 = /\A[0-9a-f]{64}\z/
@@ -51,14 +51,19 @@ module Relspec
         end
       end
 
-      # One source package's result. +files+: Produced, empty unless built.
-      Record = Struct.new(:source, :package, :version, :status, :duration, :log, :reason, :files, keyword_init: true) do
+      # One source package's result. +files+: Produced, empty unless built;
+      # +dsc_sha256+: the SHA256 of the .dsc it was built from (nil in
+      # results written before relspec recorded it: such a build is done
+      # again, since a source rewritten at the same version is another one).
+      Record = Struct.new(:source, :package, :version, :dsc_sha256, :status, :duration, :log, :reason, :files,
+                          keyword_init: true) do
         def built?
           status == "built"
         end
 
         def to_h
-          { "package" => package, "version" => version, "status" => status, "duration" => duration,
+          { "package" => package, "version" => version, "dsc_sha256" => dsc_sha256, "status" => status,
+            "duration" => duration,
             "log" => log, "reason" => reason, "files" => files.empty? ? nil : files.map(&:to_h) }.compact
         end
       end
@@ -108,22 +113,27 @@ module Relspec
         @records[source]
       end
 
-      # True when +source+ was built at +version+ and every file it produced
-      # is still there with the bytes recorded.
-      def built?(source, version)
+      # True when +source+ was built at +version+ from the .dsc whose SHA256
+      # is +dsc_sha256+, and every file it produced is still there with the
+      # bytes recorded.
+      def built?(source, version, dsc_sha256)
         record = @records[source]
-        !!record&.built? && record.version == version && record.files.all? { |file| file.intact?(File.dirname(@path)) }
+        !!record&.built? && record.version == version && !dsc_sha256.nil? && record.dsc_sha256 == dsc_sha256 &&
+          record.files.all? { |file| file.intact?(File.dirname(@path)) }
       end
 
       def record(record)
         @records[record.source] = record
       end
 
-      # Drops the results of sources not in +sources+ (what compile no
-      # longer plans is not a result).
-      def keep_only(sources)
+      # The results of +sources+ only (what the current plan builds), as
+      # another BuildResults of the same file; the file itself keeps the
+      # others, so that narrowing a plan and widening it again builds
+      # nothing twice.
+      def within(sources)
         wanted = sources.to_h { |source| [source, true] }
-        @records.select! { |source, _| wanted[source] }
+        self.class.new(@path, @release, @target, records: @records.values.select { |record| wanted[record.source] },
+                                                 backend: @backend)
       end
 
       def write(backend:)
@@ -166,7 +176,8 @@ module Relspec
           files = files(fields, path + ["files"])
           fail_at(path + ["files"], "a built package lists the files it produced") if status == "built" && files.empty?
           Record.new(source: source, package: @fields.text(fields, path + ["package"]),
-                     version: version(fields, path + ["version"]), status: status,
+                     version: version(fields, path + ["version"]), dsc_sha256: dsc_sha256(fields, path + ["dsc_sha256"]),
+                     status: status,
                      duration: duration(fields, path + ["duration"]),
                      log: fields["log"].nil? ? nil : @fields.plain_path(fields, path + ["log"]),
                      reason: @fields.optional_text(fields, path + ["reason"]), files: files.freeze).freeze
@@ -184,6 +195,14 @@ module Relspec
             fail_at(at + ["size"], "size must be a number of bytes") unless size.is_a?(Integer) && size >= 0
             Produced.new(name: name, sha256: sha256, size: size).freeze
           end
+        end
+
+        def dsc_sha256(fields, path)
+          return nil if fields[path.last].nil?
+
+          value = @fields.text(fields, path)
+          fail_at(path, "dsc_sha256 must be 64 lowercase hex digits") unless value.match?(SHA256)
+          value
         end
 
         def duration(hash, path)

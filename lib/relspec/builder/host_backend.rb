@@ -46,6 +46,9 @@ module Relspec
       # Nothing to prepare: the machine is the build environment.
       def prepare(_target, log: nil); end
 
+      # Nothing to clean up after a run either.
+      def finish; end
+
       def build(request)
         Dir.mktmpdir("relspec-host-build") do |work|
           tree = File.join(work, "source")
@@ -57,7 +60,7 @@ module Relspec
             add_shlibs(tree, local, request.log)
             command = overlay(request, work, local) + command
           end
-          @tool.run(request.source, command, log: request.log, chdir: tree)
+          @tool.run(request.source, command, log: request.log, chdir: tree, name: "dpkg-buildpackage")
           ProducedFiles.collect(work, request.output_dir)
         end
       end

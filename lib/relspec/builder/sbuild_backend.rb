@@ -6,6 +6,7 @@ require_relative "chroot"
 require_relative "../error"
 require_relative "produced_files"
 require_relative "shell_line"
+require_relative "unpack_dir"
 
 module Relspec
   module Builder
@@ -25,16 +26,24 @@ module Relspec
       NAME = "sbuild"
 
       # +distributions+: codename => ReleaseSpec::Distribution; +chroot_cache+: the
-      # folder of chroot tarballs (default: relspec's cache).
-      def initialize(tool, distributions, chroot_cache: nil)
+      # folder of chroot tarballs (default: relspec's cache); +unpack_dir+:
+      # where each build's chroot is unpacked (UnpackDir: tmpfs when there
+      # is room).
+      def initialize(tool, distributions, chroot_cache: nil, unpack_dir: UnpackDir.new)
         @tool = tool
         @distributions = distributions
         @chroot_cache = chroot_cache
+        @unpack_dir = unpack_dir
         @chroots = {}
       end
 
       def name
         NAME
+      end
+
+      # Called once when the run ends: nothing of it stays on tmpfs.
+      def finish
+        @unpack_dir.close
       end
 
       # Makes the target's chroot tarball unless it exists; true if it did.
@@ -45,7 +54,8 @@ module Relspec
       def build(request)
         prepare(request.target, log: request.log)
         Dir.mktmpdir("relspec-sbuild") do |work|
-          @tool.run(request.source, command(request, work), log: request.log, chdir: work)
+          environment = @unpack_dir.environment
+          @tool.run(request.source, command(request, work), log: request.log, chdir: work, env: environment)
           ProducedFiles.collect(work, request.output_dir)
         end
       end

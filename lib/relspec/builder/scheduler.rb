@@ -3,8 +3,11 @@
 module Relspec
   module Builder
     # Runs builds in dependency order: a package starts as soon as every
-    # build-dependency it has in the plan is done (not wave by wave), up to
-    # +jobs+ at once. A failed package's reverse dependencies are skipped,
+    # package of its build-dependency closure in the plan is done (not wave
+    # by wave), up to +jobs+ at once. The closure, not only the direct
+    # build-dependencies: a backend installs the whole closure, and a
+    # dependency's dependency rebuilt in the same run (its files were
+    # damaged, say) must be there before. A failed package's reverse dependencies are skipped,
     # naming the failed package; the others go on with +keep_going+, else
     # nothing new starts after the first failure.
     #
@@ -26,6 +29,9 @@ module Relspec
         @jobs = [jobs.to_i, 1].max
         @keep_going = keep_going
         @done = done.to_h { |source| [source, true] }
+        by_source = entries.to_h { |entry| [entry.source, entry] }
+        @needs = {}
+        entries.each { |entry| closure(entry, by_source) }
       end
 
       # Yields each entry to build; the block returns a value or raises a
@@ -88,8 +94,8 @@ module Relspec
       # order. With nothing running and nothing ready (a dependency cycle,
       # which autoproj refuses but a snapshot might hold), the first one goes.
       def ready(pending, wanted, running, failed)
-        candidates = pending.reject { |entry| entry.build_depends.any? { |dep| failed[dep] } }
-        list = candidates.select { |entry| entry.build_depends.none? { |dep| wanted[dep] } }
+        candidates = pending.reject { |entry| @needs[entry.source].any? { |dep| failed[dep] } }
+        list = candidates.select { |entry| @needs[entry.source].none? { |dep| wanted[dep] } }
         list = candidates.first(1) if list.empty? && running.empty? && !candidates.empty?
         list
       end
@@ -99,15 +105,29 @@ module Relspec
       def skip_dependents(pending, failed)
         skipped = []
         loop do
-          entry = pending.find { |candidate| candidate.build_depends.any? { |dep| failed[dep] } }
+          entry = pending.find { |candidate| @needs[candidate.source].any? { |dep| failed[dep] } }
           break unless entry
 
-          root = failed[entry.build_depends.find { |dep| failed[dep] }]
+          root = failed[@needs[entry.source].find { |dep| failed[dep] }]
           pending.delete(entry)
           failed[entry.source] = root
           skipped << Outcome.new(entry: entry, status: :skipped, reason: "build-dependency #{root} failed")
         end
         skipped
+      end
+
+      # The sources in the plan that +entry+ needs built, directly or
+      # through others, in plan order of discovery; a cycle (see #ready)
+      # ends where it closes and never names the entry itself.
+      def closure(entry, by_source, visiting = {})
+        @needs.fetch(entry.source) do
+          visiting[entry.source] = true
+          found = entry.build_depends.select { |dep| by_source.key?(dep) }.flat_map do |dep|
+            visiting[dep] ? [dep] : [dep, *closure(by_source[dep], by_source, visiting)]
+          end
+          visiting.delete(entry.source)
+          @needs[entry.source] = (found.uniq - [entry.source]).freeze
+        end
       end
 
       def start(entry, finished)

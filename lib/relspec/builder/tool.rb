@@ -21,15 +21,17 @@ module Relspec
       end
 
       # Runs +command+; raises BuildError naming +source+, the tool, its exit
-      # status and +log+ when it fails. +stdin+: a file to read input from.
-      def run(source, command, log:, chdir: nil, env: {}, stdin: nil)
+      # status and +log+ when it fails. +stdin+: a file to read input from;
+      # +name+: the tool the failure names when +command+ is a wrapper that
+      # execs it (unshare … dpkg-buildpackage: the exit status is the tool's).
+      def run(source, command, log:, chdir: nil, env: {}, stdin: nil, name: File.basename(command.first))
         options = { out: [log, "a"], err: %i[child out], pgroup: true, in: stdin || File::NULL }
         options[:chdir] = chdir if chdir
         File.open(log, "a") { |file| file.puts("$ #{command.join(' ')}") }
         status = wait(spawn(OUTSIDE_BUNDLE.merge(env), command, options))
         return if status.success?
 
-        raise BuildError, "#{source}: #{File.basename(command.first)} failed " \
+        raise BuildError, "#{source}: #{name} failed " \
                           "(#{status.exitstatus ? "exit status #{status.exitstatus}" : "signal #{status.termsig}"}), " \
                           "see #{log}"
       end

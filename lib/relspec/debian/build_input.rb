@@ -11,10 +11,13 @@ module Relspec
     # distribution +gems+ as ruby-<gem>) and, for a gem of the release, the
     # +gem+ archive (nil otherwise), and +ruby_dirs+: where the target's Ruby
     # would have a compiled package install Ruby code, relative to the
-    # prefix (Distribution#ruby_install_dirs). Immutable.
+    # prefix (Distribution#ruby_install_dirs), and +closure_tools+: the
+    # build-only tools of its whole dependency closure
+    # (ControlRelations.build_only), sorted. Immutable.
     BuildInput = Struct.new(:package, :deb_name, :upstream, :codename, :release, :maintainer, :install_dir,
-                            :debhelper_compat, :dependencies, :apt, :gems, :gem, :ruby_dirs, keyword_init: true) do
-      def initialize(debhelper_compat: BuildInput::DEFAULT_COMPAT, gem: nil, ruby_dirs: [], **fields)
+                            :debhelper_compat, :dependencies, :apt, :gems, :gem, :ruby_dirs, :closure_tools,
+                            keyword_init: true) do
+      def initialize(debhelper_compat: BuildInput::DEFAULT_COMPAT, gem: nil, ruby_dirs: [], closure_tools: [], **fields)
         super
         freeze
       end

@@ -29,6 +29,16 @@ module Relspec
 
       module_function
 
+      # What a package's users need at their own build time that its
+      # Depends leaves out: the build-only tools among its build type's and
+      # its OS dependencies. A package that uses base/cmake's macros (which
+      # call pkg-config) or an oroGen typekit (found with pkg-config) needs
+      # them as autoproj would have installed them: the osdeps of the whole
+      # dependency closure before building.
+      def build_only(build_type, apt)
+        (BUILD_TOOLS.fetch(build_type, []) + apt) & BUILD_ONLY
+      end
+
       # The distribution's ruby-<gem> packages for the gems of an
       # OsDependencies that the release does not package itself
       # (+release_gems+: the names it packages), with the entry's version
@@ -47,10 +57,12 @@ module Relspec
 
       # +own+: relations to Rock packages ("name (>= version)"), written first.
       # +debhelper+: the relation naming the target's debhelper compat level.
-      def build_depends(build_type, own, os, debhelper: DEBHELPER)
+      # +closure+: the build-only tools of the package's dependency closure
+      # (#build_only of each), written last.
+      def build_depends(build_type, own, os, debhelper: DEBHELPER, closure: [])
         return [debhelper] if build_type == "meta"
 
-        ([debhelper] + BUILD_TOOLS.fetch(build_type, []) + own + os).uniq
+        ([debhelper] + BUILD_TOOLS.fetch(build_type, []) + own + os + closure).uniq
       end
 
       # What a gem that ships headers for other code (GemArchive#ships_headers?)

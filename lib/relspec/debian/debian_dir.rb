@@ -222,7 +222,7 @@ module Relspec
 
       def build_depends
         ControlRelations.build_depends(@in.package.build_type, own_relations, os_relations + autoreconf,
-                                       debhelper: debhelper)
+                                       debhelper: debhelper, closure: @in.closure_tools)
       end
 
       # debhelper runs dh_autoreconf by itself from compat 10 on; before

@@ -20,6 +20,8 @@ module Relspec
         # install folders by where a package comes from: every dependent
         # asks, so computed once
         @install_dirs = {}
+        # build-only tools of a package's closure, by codename and name
+        @closure_tools = {}
       end
 
       # +decisions+: the target's decisions, those of dependencies settled.
@@ -33,7 +35,8 @@ module Relspec
           debhelper_compat: distribution.debhelper_compat, ruby_dirs: distribution.ruby_install_dirs(target.arch),
           dependencies: dependencies_of(package, decisions), apt: os.apt,
           gems: Debian::ControlRelations.distribution_gems(os, @release_catalog.gems.keys),
-          gem: @release_catalog.gems[package.name]
+          gem: @release_catalog.gems[package.name],
+          closure_tools: closure_tools(package, target, decisions)
         )
       end
 
@@ -50,6 +53,26 @@ module Relspec
       # decision on the target, in the package's order.
       def dependency_names(package, decisions)
         package.build_dependencies.select { |name| decisions.key?(name) }
+      end
+
+      # The build-only tools (Debian::ControlRelations.build_only) of every
+      # package in +package+'s dependency closure on the target, sorted:
+      # what autoproj would have installed before building it, that the
+      # dependencies' Depends do not bring. The distribution's own packages
+      # (system decisions) bring what they need themselves.
+      def closure_tools(package, target, decisions, visiting = {})
+        dependency_names(package, decisions).reject { |name| decisions[name].system? }.flat_map do |name|
+          key = [target.to_s, name]
+          @closure_tools.fetch(key) do
+            next [] if visiting[name] || !@release_catalog.catalog.package?(name)
+
+            visiting[name] = true
+            dependency = @release_catalog.catalog.package(name)
+            apt = dependency.os_dependencies_for(target.codename).apt
+            own = Debian::ControlRelations.build_only(dependency.build_type, apt)
+            @closure_tools[key] = (own + closure_tools(dependency, target, decisions, visiting)).uniq.sort.freeze
+          end
+        end.uniq.sort
       end
 
       private

@@ -63,6 +63,7 @@ RSpec.describe "relspec build --backend host with several build-dependencies of 
     @release.package("base/b")
     @release.package("base/both", dependencies: %w[base/a base/b])
     @release.package("base/lacks", dependencies: %w[base/a base/b], osdeps: ["absent"])
+    @release.package("base/breaks", dependencies: %w[base/a], cmake: 'message(FATAL_ERROR "broken on purpose")')
     @release.compile
     @run = relspec("build", "specs/hs.yml", "--out", "out", "--backend", "host", "--keep-going", chdir: @dir)
     @records = YAML.safe_load(File.read(File.join(@release.target_dir, "build-results.yml")))["packages"]
@@ -76,7 +77,7 @@ RSpec.describe "relspec build --backend host with several build-dependencies of 
 
   it "lays every build-dependency built in the run over /opt" do
     # every package has a record, whatever its fate; else the run itself ended early
-    expect(@records.keys.sort).to eq(%w[base/a base/b base/both base/lacks].map { |name| @release.source(name) }.sort),
+    expect(@records.keys.sort).to eq(%w[base/a base/b base/both base/breaks base/lacks].map { |name| @release.source(name) }.sort),
                                   "#{@run.stdout}#{@run.stderr}"
     expect(@records.fetch(@release.source("base/both"))["status"]).to eq("built"), log("base/both")
     %w[base/a base/b].each do |dependency|
@@ -89,6 +90,12 @@ RSpec.describe "relspec build --backend host with several build-dependencies of 
     expect(record["status"]).to eq("failed")
     expect(record["reason"]).to start_with("#{@release.source('base/lacks')}: build-dependencies missing on this " \
                                            "machine: relspec-test-absent-package (relspec looked")
+  end
+
+  it "names the build tool that failed, not the wrapper laying the build-dependencies over /opt" do
+    record = @records.fetch(@release.source("base/breaks"))
+    expect(record["reason"]).to start_with("#{@release.source('base/breaks')}: dpkg-buildpackage failed (exit status ")
+    expect(log("base/breaks")).to include("$ unshare --mount", "broken on purpose")
   end
 end
 

@@ -90,4 +90,31 @@ RSpec.describe "resuming relspec build", order: :defined do
     file = record.fetch("files").find { |entry| entry["name"].end_with?(".deb") }
     expect(Digest::SHA256.file(deb).hexdigest).to eq(file.fetch("sha256"))
   end
+
+  def build_text
+    run = relspec("build", "specs/resume.yml", "--out", "out", "--backend", "host", chdir: @dir)
+    expect(run.exit_code).to eq(0), run.stderr
+    run.stdout[%r{bookworm/amd64: .*\)}]
+  end
+
+  it "keeps the records of packages a narrowed plan leaves out, and builds nothing again when it widens" do
+    spec = File.read(@release.spec_path)
+    File.write(@release.spec_path, "#{spec}select: [base/a1]\n")
+    compile = relspec("compile", "specs/resume.yml", "--out", "out", chdir: @dir)
+    expect(compile.exit_code).to eq(0), compile.stderr
+    expect(build_text).to start_with("bookworm/amd64: 0 built, 1 already built")
+    expect(packages.keys.sort).to eq(%w[base/a1 base/a2 base/zslow].map { |name| @release.source(name) })
+    File.write(@release.spec_path, spec)
+    expect(relspec("compile", "specs/resume.yml", "--out", "out", chdir: @dir).exit_code).to eq(0)
+    expect(build_text).to start_with("bookworm/amd64: 0 built, 3 already built")
+  end
+
+  it "builds again a source package rewritten at the same version, and only it" do
+    # what compile does when the packaging changes but the version does not
+    # (no lock history): other bytes of the .dsc, the same name
+    dsc = Dir.glob(File.join(@release.target_dir, @release.source("base/a2"), "*.dsc")).first
+    File.write(dsc, "#{File.read(dsc).chomp}\nX-Relspec-Test: rewritten\n")
+    expect(build_text).to start_with("bookworm/amd64: 1 built, 2 already built")
+    expect(packages.fetch(@release.source("base/a2")).fetch("dsc_sha256")).to eq(Digest::SHA256.file(dsc).hexdigest)
+  end
 end

@@ -8,14 +8,22 @@ require_relative "../../support/build_release"
 # mmdebstrap (unshare mode) from this machine's apt sources, then sbuild
 # (unshare mode) builds a package and one that build-depends on it (the
 # first one's .deb handed over with --extra-package).
+#
+# base/one is a macro package as base/cmake is: it installs a CMake module
+# that calls pkg-config, which it declares as an OS dependency. base/two uses
+# that module at its build time, so the clean chroot has pkg-config only when
+# base/two's Build-Depends carry the build-only tools of its dependency
+# closure (issue 32; base/one's Depends leave pkg-config out).
 RSpec.describe "relspec build --backend sbuild", order: :defined do
   before(:all) do
     @dir = Dir.mktmpdir("relspec-build-sbuild")
     # the test run's cache: the chroot tarball is made once for every sbuild test
     @cache = CliRunner::CACHE
     @release = BuildRelease.new(@dir, "sb")
-    @release.package("base/one")
-    @release.package("base/two", dependencies: ["base/one"])
+    @release.osdeps("pkg-config:\n  debian: pkg-config\n")
+    @release.package("base/one", cmake: "install(FILES one-config.cmake DESTINATION share/cmake/one)",
+                                 osdeps: ["pkg-config"], files: { "one-config.cmake" => "find_package(PkgConfig REQUIRED)\n" })
+    @release.package("base/two", dependencies: ["base/one"], cmake: "find_package(one REQUIRED)")
     @release.compile
   end
 
@@ -35,8 +43,11 @@ RSpec.describe "relspec build --backend sbuild", order: :defined do
     expect(results.fetch("packages").values.map { |record| record["status"] }).to eq(%w[built built])
     two = File.read(File.join(@release.target_dir, "logs", "#{@release.source('base/two')}.log"))
     expect(two).to include("--chroot-mode=unshare", "--extra-package=", "#{@release.source('base/one')}_")
-    # sbuild installed the build-dependency built a moment ago in the chroot.
+    # sbuild installed the build-dependency built a moment ago in the chroot,
+    # and pkg-config for base/one's CMake module (not in base/one's Depends).
     expect(two).to match(/Unpacking #{Regexp.escape(@release.source('base/one'))} /)
+    expect(two).to match(/Unpacking pkg-config:amd64 /)
+    expect(two).to include("Found PkgConfig: /usr/bin/pkg-config")
 
     mtime = File.mtime(chroot)
     again = build("--prepare")

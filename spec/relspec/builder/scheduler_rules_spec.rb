@@ -49,6 +49,26 @@ RSpec.describe Relspec::Builder::Scheduler do
     expect(started).to eq(%w[x y])
   end
 
+  it "waits for the whole build-dependency closure, not only the direct build-dependencies" do
+    # b was built by an earlier run; a (b's build-dependency) is built again:
+    # c, which uses b and so a, waits for a and is skipped when a fails
+    events = []
+    lock = Mutex.new
+    graph = { "a" => [], "b" => ["a"], "c" => ["b"], "free" => [] }
+    described_class.new(entries(graph), jobs: 2, done: ["b"]).run do |entry|
+      lock.synchronize { events << [:start, entry.source] }
+      sleep 0.2
+      lock.synchronize { events << [:finish, entry.source] }
+    end
+    expect(events.index([:start, "c"])).to be > events.index([:finish, "a"])
+    outcomes = described_class.new(entries(graph), jobs: 2, keep_going: true, done: ["b"]).run do |entry|
+      raise Relspec::BuildError, "a: failed" if entry.source == "a"
+    end
+    expect(outcomes.to_h { |outcome| [outcome.entry.source, [outcome.status, outcome.reason]] }).to eq(
+      "a" => [:failed, "a: failed"], "c" => [:skipped, "build-dependency a failed"], "free" => [:built, nil]
+    )
+  end
+
   it "raises a bug in a build in the calling thread" do
     expect { described_class.new(entries("a" => []), jobs: 1).run { raise ArgumentError, "bug" } }
       .to raise_error(ArgumentError, "bug")

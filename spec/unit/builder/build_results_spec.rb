@@ -85,16 +85,40 @@ RSpec.describe Relspec::Builder::BuildResults do
       record = described_class::Record
       results.record(record.new(source: "zz-b", package: "b", version: "2", status: "failed", duration: 1.5,
                                 log: "logs/zz-b.log", reason: "boom", files: []))
-      results.record(record.new(source: "aa-a", package: "a", version: "1", status: "built", duration: 2,
+      results.record(record.new(source: "aa-a", package: "a", version: "1", dsc_sha256: sha, status: "built", duration: 2,
                                 log: "logs/aa-a.log", files: [described_class::Produced.of(dir, deb)]))
       results.write(backend: "host")
       again = described_class.load(dir, release: "demo-base", target: target)
       expect(again.entries.map(&:to_h)).to eq(results.entries.map(&:to_h))
+      expect(again["aa-a"].dsc_sha256).to eq(sha)
       expect([again.entries.map(&:source), again.backend]).to eq([%w[aa-a zz-b], "host"])
-      expect([again.built?("aa-a", "1"), again.built?("aa-a", "2"), again.built?("zz-b", "2")]).to eq([true, false, false])
+      expect([again.built?("aa-a", "1", sha), again.built?("aa-a", "2", sha), again.built?("zz-b", "2", sha)])
+        .to eq([true, false, false])
+      # the same version from another source package (rewritten by compile), or not known
+      expect([again.built?("aa-a", "1", "b" * 64), again.built?("aa-a", "1", nil)]).to eq([false, false])
       File.write(File.join(dir, deb), "changed!!")
-      expect(again.built?("aa-a", "1")).to be(false)
+      expect(again.built?("aa-a", "1", sha)).to be(false)
     end
+  end
+
+  it "gives the records of the planned sources as a view and keeps the others in the file" do
+    Dir.mktmpdir do |dir|
+      results = described_class.load(dir, release: "demo-base", target: target)
+      %w[aa-a zz-b].each do |source|
+        results.record(described_class::Record.new(source: source, package: source, version: "1", status: "failed",
+                                                   files: []))
+      end
+      view = results.within(["zz-b"])
+      expect(view.entries.map(&:source)).to eq(["zz-b"])
+      results.write(backend: "host")
+      expect(described_class.load(dir, release: "demo-base", target: target).entries.map(&:source)).to eq(%w[aa-a zz-b])
+    end
+  end
+
+  it "refuses a dsc_sha256 that is not a SHA256, naming the line" do
+    text = good.sub("  status: built\n", "  dsc_sha256: abc\n    status: built\n")
+    expect { described_class.parse(text, file: "build-results.yml", release: "demo-base", target: target) }
+      .to raise_error(Relspec::InvalidInput, /build-results.yml:\d+.*dsc_sha256 must be 64 lowercase hex digits/m)
   end
 
   it "refuses binary bytes and a list of files given as null for a built package" do

@@ -1,0 +1,102 @@
+# frozen_string_literal: true
+
+require "fileutils"
+require "open3"
+require_relative "../temporaries"
+
+module Relspec
+  module Builder
+    # Where sbuild (unshare mode) unpacks the chroot of one build: in memory
+    # (tmpfs, /dev/shm) when this machine has room for it, else sbuild's own
+    # default on disk (/tmp). Unpacking the tarball and deleting the tree
+    # after the build cost seconds each on a loaded disk and a fraction of
+    # a second on tmpfs (docs/performance.md).
+    #
+    # sbuild 0.85 reads `$unshare_tmpdir_template` from the file named by
+    # SBUILD_CONFIG, so this machine's sbuild configuration is not touched.
+    # The chroots go into one folder per relspec process, named as
+    # Temporaries names it, removed when the run ends (#close); a build
+    # killed with its relspec leaves its tree there, and the next relspec run
+    # that builds with sbuild removes it.
+    class UnpackDir
+      SHM = "/dev/shm"
+      # Room a build needs on tmpfs and in free memory: a Rock package's
+      # chroot with its build-dependencies and build tree is a few GB, and
+      # other builds run beside it.
+      NEEDED = 6 * (1024**3)
+
+      # Bytes free in the file system of +dir+ (df; Ruby has no statvfs),
+      # nil when unknown.
+      def self.free_bytes(dir)
+        output, status = Open3.capture2("df", "--output=avail", "-B1", dir, err: File::NULL)
+        status.success? ? output.lines.last.to_i : nil
+      rescue SystemCallError
+        nil
+      end
+
+      # +shm+: the tmpfs folder; +meminfo+: /proc/meminfo; +needed+: bytes
+      # of tmpfs and of available memory a build needs to unpack there;
+      # +free_bytes+: how the tmpfs's free bytes are asked.
+      def initialize(shm: SHM, meminfo: "/proc/meminfo", needed: NEEDED, free_bytes: UnpackDir.method(:free_bytes))
+        @shm = shm
+        @meminfo = meminfo
+        @needed = needed
+        @free_bytes = free_bytes
+        @lock = Mutex.new
+        @root = nil
+      end
+
+      # The environment of one sbuild run: SBUILD_CONFIG naming a file that
+      # puts the chroot on tmpfs, or nothing (sbuild's default) when tmpfs
+      # or memory is short now.
+      def environment
+        return {} unless room?
+
+        { "SBUILD_CONFIG" => config }
+      end
+
+      # Removes this process's folder (the chroots of finished builds are
+      # gone already: sbuild removes them).
+      def close
+        @lock.synchronize do
+          FileUtils.rm_rf(@root) if @root
+          @root = nil
+        end
+      end
+
+      # Enough bytes free on the tmpfs and available in memory for a build.
+      def room?
+        return false unless File.directory?(@shm) && File.writable?(@shm)
+
+        free = @free_bytes.call(@shm)
+        available = available_memory
+        !free.nil? && !available.nil? && free >= @needed && available >= @needed
+      end
+
+      private
+
+      # The config file in this process's folder, written once.
+      def config
+        @lock.synchronize do
+          @root ||= begin
+            Temporaries.sweep(@shm)
+            root = Temporaries.path(@shm, "sbuild")
+            # sbuild's namespace root (a subordinate uid) makes the chroot
+            # folder inside and must reach it
+            FileUtils.mkdir(root, mode: 0o755)
+            File.write(File.join(root, "sbuild.conf"), "$unshare_tmpdir_template = '#{root}/chroot.XXXXXXXXXX';\n1;\n")
+            root
+          end
+          File.join(@root, "sbuild.conf")
+        end
+      end
+
+      def available_memory
+        kib = File.read(@meminfo)[/^MemAvailable:\s+(\d+) kB/, 1]
+        kib && (kib.to_i * 1024)
+      rescue SystemCallError
+        nil
+      end
+    end
+  end
+end
