@@ -97,7 +97,7 @@ Dir.mktmpdir("relspec-bench-sbuild") do |dir|
   row("now, chroot on disk", *timed_sbuild(command, {}))
 
   old = File.join(dir, "before.tar.zst")
-  sources = Relspec::Builder::Chroot::HOST_SOURCES.select { |file| File.file?(file) && !File.read(file).strip.empty? }
+  sources = Relspec::Builder::Chroot.host_sources
   made = Timing.seconds do
     output, status = Open3.capture2e("mmdebstrap", "--variant=buildd", "--mode=unshare", "--arch=amd64",
                                      "--include=debhelper", "bookworm", old, *sources)

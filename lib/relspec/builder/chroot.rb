@@ -31,7 +31,22 @@ module Relspec
       INCLUDE = %w[debhelper].freeze
       # the lists kept (see above), dpkg without fsync in every later build
       SPEED = %w[--skip=cleanup/apt/lists --dpkgopt=force-unsafe-io].freeze
-      HOST_SOURCES = ["/etc/apt/sources.list", *Dir.glob("/etc/apt/sources.list.d/*.{list,sources}").sort].freeze
+      # The first line of every apt source relspec's package set writes
+      # (Osdeps::PackageSet's init.rb).
+      PACKAGE_SET_SOURCE = "# written by relspec's autoproj package set"
+
+      # This machine's apt sources of its distribution, read when a chroot
+      # is made: every non-empty source file but those relspec's package
+      # set wrote for a workspace (a release repository is not the
+      # distribution, and a chroot made with one would need its server).
+      def self.host_sources(etc = "/etc/apt")
+        ["#{etc}/sources.list", *Dir.glob("#{etc}/sources.list.d/*.{list,sources}").sort].select do |file|
+          next false unless File.file?(file)
+
+          text = File.read(file)
+          !text.strip.empty? && !text.start_with?(PACKAGE_SET_SOURCE)
+        end
+      end
 
       attr_reader :path
 
@@ -110,7 +125,7 @@ module Relspec
         return [archive.url] if archive.url && !archive.host?
 
         if host_codename == @target.codename
-          sources = HOST_SOURCES.select { |file| File.file?(file) && !File.read(file).strip.empty? }
+          sources = Chroot.host_sources
           return sources unless sources.empty?
         end
         raise BuildError, "cannot make the chroot for #{@target}: no mirror of #{@target.codename} " \

@@ -247,6 +247,7 @@ module RelspecPackageSet
     SOURCES = "/etc/apt/sources.list.d"
     KEYRINGS = "/etc/apt/keyrings"
     LISTS = "/var/lib/apt/lists"
+    # Relspec::Builder::Chroot::PACKAGE_SET_SOURCE: chroots never take these sources.
     HEADER = "# written by relspec's autoproj package set\n"
     # apt-get update: at most this long, each connection this long
     DEADLINE = 300
