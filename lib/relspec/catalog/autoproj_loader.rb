@@ -14,6 +14,7 @@ require_relative "copyright_holders"
 require_relative "package_environment"
 require_relative "orogen_arguments"
 require_relative "cmake_defines"
+require_relative "import_patch"
 
 module Relspec
   class Catalog
@@ -289,7 +290,7 @@ module Relspec
           "checked_out" => definition.checked_out?, "dependencies" => autobuild.dependencies.sort,
           "optional_dependencies" => optional_packages.sort, "defines" => CmakeDefines.of(autobuild, root_dir: ws.root_dir),
           "environment" => PackageEnvironment.of(autobuild, root_dir: ws.root_dir),
-          "orogen_arguments" => OrogenArguments.of(autobuild)
+          "orogen_arguments" => OrogenArguments.of(autobuild), "patches" => ImportPatch.list_of(autobuild.importer) { |path| relative(ws, path) }
         }.compact.merge(manifest_data(ws, autobuild.description))
       end
 

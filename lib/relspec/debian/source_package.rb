@@ -7,6 +7,7 @@ require_relative "orig_tarball"
 require_relative "debian_dir"
 require_relative "overlay"
 require_relative "overlay_patch"
+require_relative "package_set_patch"
 require_relative "emitted"
 require_relative "orig_cache"
 require_relative "naming"
@@ -176,16 +177,22 @@ module Relspec
         end
       end
 
-      # The overlay's files as the first patch, then its own patches.
+      # The package set's patches first (autoproj applies them at import),
+      # then the overlay's files as one patch, then the overlay's patches.
+      # The overlay's files are compared with the upstream tree, so an
+      # overlay file must not be one a package set patch changes.
       def patches_over(tree)
-        files = @overlay.files(@substitutions)
+        package = @input.package
         upstream = lambda do |path|
           file = File.join(tree, path)
           File.file?(file) && !File.symlink?(file) ? File.binread(file) : nil
         end
-        generated = OverlayPatch.of(files, upstream: upstream, package_name: @input.package.name,
-                                           overlay_dir: @overlay.dir)
-        (generated ? [[OverlayPatch::NAME, generated]] : []) + @overlay.patches(@input.package.name)
+        imported = package.patches.each_with_index.map do |patch, index|
+          PackageSetPatch.of(patch, index: index, package_name: package.name, exists: ->(path) { upstream.call(path) })
+        end
+        generated = OverlayPatch.of(@overlay.files(@substitutions), upstream: upstream, package_name: package.name,
+                                                                    overlay_dir: @overlay.dir)
+        imported + (generated ? [[OverlayPatch::NAME, generated]] : []) + @overlay.patches(package.name)
       end
 
       # mkdir -p with mode 0755 whatever the umask (the folders of debian/

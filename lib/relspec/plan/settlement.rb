@@ -53,8 +53,9 @@ module Relspec
         upstream = Debian::PackageVersion.of_package(package)
         input = @inputs.for(target, decision, upstream, decisions)
         overlay = @overlays.call(package.name, target.arch)
+        # the package set's patches travel in debian/patches: changing one changes the revision
         digest = Digest::SHA256.hexdigest(Debian::DebianDir.digest(Debian::DebianDir.render(input, version: nil)) +
-                                          overlay.signature)
+                                          overlay.signature + package.patches.map(&:to_h).to_s)
         result = @versioning.settle(target: target, package: package.name, deb_name: decision.deb_name,
                                     upstream: upstream, digest: digest)
         final = Decision.new(**decision.each_pair.to_h, kind: result.published ? :published : :build,

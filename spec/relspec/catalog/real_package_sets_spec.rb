@@ -55,6 +55,14 @@ RSpec.describe "the real Rock package sets" do
               { "type" => "add_path", "name" => "QT_PLUGIN_PATH", "values" => ["$PREFIX/lib/qt"] }])
   end
 
+  it "carries rock.core's import patch of tools/class_loader with its level and text" do
+    patches = catalog_of.package("tools/class_loader").patches
+    expect(patches.map { |patch| [patch.path, patch.level] })
+      .to eq([[".autoproj/remotes/github__rock_core_package_set_git/patches/class_loader_pkgconfig.patch", 0]])
+    expect(patches.first.content).to include("+Requires: console_bridge @PKGCONFIG_REQUIRES@")
+    expect(catalog_of.package("base/cmake").patches).to eq([])
+  end
+
   it "gives oroGen packages the generator words autoproj would, from both package sets" do
     # orocos.toolchain turns CORBA on (rtt_corba_implementation omniorb);
     # rock.core, with USE_OCL off: type export 'used' and --no-rtt-scripting,
