@@ -40,7 +40,9 @@ class RealRockWorkspace
     "stdint_typekit" => %w[stdint_typekit stdint_typekit],
     # rock.core patches class_loader at import (patches/class_loader_pkgconfig.patch)
     "tools/class_loader" => ["class_loader", "tools/class_loader"],
-    "base/console_bridge" => ["base-console_bridge", "base/console_bridge"]
+    "base/console_bridge" => ["base-console_bridge", "base/console_bridge"],
+    # needs qtruby, which rock.core's osdeps define for Ubuntu and Gentoo only
+    "gui/vizkit" => ["gui-vizkit", "gui/vizkit"]
   }.freeze
   # what autoproj checks out where the repository has no HEAD branch (class_loader: `tag: 0.3.8`)
   CHECKOUTS = { "tools/class_loader" => "0.3.8" }.freeze

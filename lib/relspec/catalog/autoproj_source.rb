@@ -118,7 +118,8 @@ module Relspec
           [name, package]
         end
         Catalog.new(packages: packages, metapackages: data["metapackages"], layout: data["layout"],
-                    excluded: data["excluded"], ignored: data["ignored"], codenames: @distributions.keys)
+                    excluded: data["excluded"], ignored: data["ignored"], codenames: @distributions.keys,
+                    exclusion_reasons: data["exclusion_reasons"], weak_metapackages: data["weak_metapackages"])
       end
     end
   end

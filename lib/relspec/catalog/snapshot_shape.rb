@@ -42,7 +42,11 @@ module Relspec
       end
 
       def check_top(data, check)
-        %w[codenames layout excluded ignored].each { |key| list_of_text(data, [key], check) }
+        %w[codenames layout excluded ignored weak_metapackages].each { |key| list_of_text(data, [key], check) }
+        reasons = data.fetch("exclusion_reasons", {})
+        if hash?(reasons, ["exclusion_reasons"], check)
+          reasons.each { |name, reason| check.call(["exclusion_reasons", name], false, "text") unless TEXT.call(reason) }
+        end
         metapackages = data.fetch("metapackages", {})
         if hash?(metapackages, ["metapackages"], check)
           metapackages.each_key { |name| list_of_text(metapackages, [name], check, prefix: ["metapackages"]) }

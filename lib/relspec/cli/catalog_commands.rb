@@ -65,6 +65,8 @@ module Relspec
             why =
               if reason.dependency then "requires #{reason.dependency}"
               elsif reason.left_out then "left out by #{reason.left_out.pattern.source} (#{reason.left_out.reason})"
+              elsif reason.excluded then "excluded by autoproj: #{reason.excluded}"
+              elsif reason.osdeps.nil? then "osdeps #{reason.other_os.join(', ')} defined for other systems only"
               else "osdeps #{reason.osdeps.join(', ')} nonexistent"
               end
             puts format("  %-32s unavailable on #{codename}: %s", name, why)

@@ -113,6 +113,10 @@ module Relspec
               Cause.unavailable_dependency(reason.dependency, cause_of.call(reason.dependency))
             elsif reason.left_out
               Cause.left_out(reason.left_out.pattern.source, reason.left_out.reason)
+            elsif reason.excluded
+              Cause.excluded(reason.excluded)
+            elsif reason.other_os && !reason.osdeps
+              Cause.other_os_osdeps(reason.other_os, target.codename)
             else
               Cause.nonexistent_osdeps(reason.osdeps, target.codename)
             end

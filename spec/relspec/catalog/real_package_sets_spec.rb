@@ -40,6 +40,17 @@ RSpec.describe "the real Rock package sets" do
     end
   end
 
+  it "makes gui/vizkit unavailable on bookworm through qtruby (osdeps for Ubuntu and Gentoo only), with the cause" do
+    expect(catalog_of.package("gui/vizkit").os_dependencies_for("bookworm").other_os).to eq(["qtruby"])
+    with_specs("rock" => spec_text(%w[gui/vizkit])) do |dir|
+      run = relspec("plan", File.join(dir, "rock.yml"))
+      expect(run.exit_code).to eq(1)
+      expect(run.stderr).to include("error[unavailable-selection]: gui/vizkit is selected, but cannot be built on " \
+                                    "bookworm: it needs the osdep qtruby, which the osdeps files define for other systems only")
+      expect(run.stderr).not_to include("unknown-osdep")
+    end
+  end
+
   it "runs the post_import blocks: typelib depends on the castxml importer rock.core chooses" do
     os = catalog_of.package("typelib").os_dependencies_for("bookworm")
     expect(os.apt).to include("castxml")
