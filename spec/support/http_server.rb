@@ -51,6 +51,8 @@ class HttpServer
     file = File.join(@root, path.sub(%r{\A/[^/]+/(?=dists/)}, "/").delete_prefix("/moved"))
     if File.file?(file)
       response.body = File.binread(file)
+      # as a web server serving files does: archive imports are versioned by it
+      response["Last-Modified"] = File.mtime(file).httpdate
     else
       response.status = 404
     end

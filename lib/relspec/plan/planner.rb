@@ -219,7 +219,15 @@ module Relspec
                                                 location: @spec_file.location(["workspace"]),
                                                 hint: "plan from the workspace rather than a snapshot for pins by tag or branch")]
         end
+        note_archive(package)
         Decision.new(package: package.name, kind: :build, deb_name: deb, cause: cause).freeze
+      end
+
+      # Where an archive import's source comes from (notes are said once).
+      def note_archive(package)
+        return unless (sha256 = package.vcs.sha256)
+
+        @notes << "#{package.name} is imported from the archive #{package.vcs.url} (sha256 #{sha256}, modified #{package.commit_time})"
       end
 
       def upstream(package)
