@@ -23,7 +23,8 @@ module Relspec
     class LockParser
       ROOT_KEYS = %w[relspec_lock release spec_digest ancestors packages targets history warnings notes].freeze
       ENTRY_KEYS = %w[decision deb version from causes depends debian_digest].freeze
-      PACKAGE_KEYS = %w[url commit commit_time version tag branch].freeze
+      # sha256: an archive import's checksum (Catalog::ArchiveImport)
+      PACKAGE_KEYS = %w[url commit sha256 commit_time version tag branch].freeze
       DECISIONS = %w[inherit build published system unavailable].freeze
       DIGEST = /\A[0-9a-f]{64}\z/
       DISCARD_HINT = "fix the file (it is in git), or run again with --discard-lock to start over " \

@@ -320,7 +320,7 @@ module Relspec
         names.to_h do |name|
           package = @catalog.package(name)
           vcs = package.vcs
-          [name, { "url" => vcs.url, "commit" => vcs.commit, "commit_time" => package.commit_time,
+          [name, { "url" => vcs.url, "commit" => vcs.commit, "sha256" => vcs.sha256, "commit_time" => package.commit_time,
                    "version" => upstream(package), "tag" => vcs.tag, "branch" => vcs.branch }.compact]
         end
       end
