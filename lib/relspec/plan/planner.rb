@@ -50,8 +50,8 @@ module Relspec
       def plan
         blacklist = blacklist_patterns
         targets = Target.all(@effective)
-        decisions = targets.to_h { |target| [target, plan_target(target, blacklist)] }
         unavailable = targets.to_h { |target| [target, unavailable_on(target)] }
+        decisions = targets.to_h { |target| [target, plan_target(target, blacklist, unavailable[target])] }
         note_gems_without_archive
         ReleasePlan.new(release: @effective.release, targets: decisions, packages: package_records(decisions, unavailable),
                         release_digests: @inventory.release_digests, warnings: merged_warnings, notes: @notes.uniq.sort,
@@ -60,10 +60,9 @@ module Relspec
 
       private
 
-      def plan_target(target, blacklist)
-        selection = @selections.fetch(target.codename)
-        names = selection.names
-        names.each { |name| note_optional_missing(@catalog.package(name), target) }
+      def plan_target(target, blacklist, unavailable)
+        names = @selections.fetch(target.codename).names
+        names.each { |name| note_optional_missing(@catalog.package(name), target, unavailable) }
         providers = names.to_h { |name| [name, providers_of(@catalog.package(name), target)] }
         causes = names.to_h { |name| [name, direct_cause(@catalog.package(name), target, providers[name], blacklist)] }.compact
         system = names.to_h { |name| [name, from_distribution(@catalog.package(name), target, causes[name])] }.compact
@@ -264,13 +263,13 @@ module Relspec
         end
       end
 
-      # autoproj leaves out an optional OS dependency the distribution
-      # cannot provide; the package is built without it, which plan says.
-      def note_optional_missing(package, target)
-        package.os_dependencies_for(target.codename).optional_missing.each do |name|
-          @notes << "#{package.name} is built without its optional dependency #{name} on #{target.codename}: " \
-                    "the osdeps define no package for it there"
-        end
+      # autoproj leaves out an optional dependency the distribution cannot
+      # have (an osdep without package there, a package unavailable there:
+      # +unavailable+, name => Cause); the package is built without it, which plan says.
+      def note_optional_missing(package, target, unavailable)
+        why = package.os_dependencies_for(target.codename).optional_missing.to_h { |name| [name, "the osdeps define no package for it there"] }
+        (package.optional_dependencies & unavailable.keys).each { |name| why[name] = "it is unavailable there (#{unavailable[name]})" }
+        why.sort.each { |name, reason| @notes << "#{package.name} is built without its optional dependency #{name} on #{target.codename}: #{reason}" }
       end
 
       def note_shadowing(package, target, providers)
