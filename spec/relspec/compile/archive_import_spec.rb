@@ -23,21 +23,33 @@ RSpec.describe "archive imports" do
     @server = HttpServer.new(served)
     builder = WorkspaceBuilder.new(@base)
     builder.package("base/cmake", type: :cmake, date: "2020-06-01T10:00:00Z")
-    builder.autobuild("import_package 'external/tarball'\n")
+    # bad input: an archive the server does not have, and a package set
+    # patch that names a file outside the package
+    builder.autobuild("import_package 'external/tarball'\nimport_package 'external/missing'\n" \
+                      "import_package 'external/escape'\n")
     root = builder.create
-    File.write(File.join(root, "autoproj", "overrides.yml"),
-               "overrides:\n  - external/tarball:\n      type: archive\n      url: #{@server.url}/tarball-1.2.tar.gz\n")
-    # what autoproj's import left: the archive unpacked in the source folder
-    FileUtils.mkdir_p(File.join(root, "src", "external", "tarball"))
-    File.write(File.join(root, "src", "external", "tarball", "CMakeLists.txt"), "project(tarball)\n")
-    FileUtils.mkdir_p(File.join(@base, "specs"))
-    File.write(File.join(@base, "specs", "r.yml"), <<~YAML)
-      release: r
-      maintainer: Rock Packaging <rock@example.org>
-      workspace: ../workspace
-      select: [external/tarball]
-      targets: { bookworm: [amd64] }
+    File.write(File.join(root, "autoproj", "evil.patch"), "--- ../../etc/passwd\n+++ ../../etc/passwd\n@@ -1 +1 @@\n-a\n+b\n")
+    File.write(File.join(root, "autoproj", "overrides.yml"), <<~YAML)
+      overrides:
+        - external/tarball: { type: archive, url: "#{@server.url}/tarball-1.2.tar.gz" }
+        - external/missing: { type: archive, url: "#{@server.url}/missing-1.0.tar.gz" }
+        - external/escape: { type: archive, url: "#{@server.url}/tarball-1.2.tar.gz", patches: [$AUTOPROJ_ROOT/autoproj/evil.patch] }
     YAML
+    # what autoproj's import left: the archive unpacked in the source folder
+    %w[tarball missing escape].each do |name|
+      FileUtils.mkdir_p(File.join(root, "src", "external", name))
+      File.write(File.join(root, "src", "external", name, "CMakeLists.txt"), "project(#{name})\n")
+    end
+    FileUtils.mkdir_p(File.join(@base, "specs"))
+    { "r" => "tarball", "missing" => "missing", "escape" => "escape" }.each do |spec, name|
+      File.write(File.join(@base, "specs", "#{spec}.yml"), <<~YAML)
+        release: #{spec}
+        maintainer: Rock Packaging <rock@example.org>
+        workspace: ../workspace
+        select: [external/#{name}]
+        targets: { bookworm: [amd64] }
+      YAML
+    end
   end
 
   after(:all) do
@@ -76,5 +88,17 @@ RSpec.describe "archive imports" do
     listing, = Open3.capture2("tar", "--utc", "-tvzf", origs[0])
     expect(listing).to include("/CMakeLists.txt").and include("/README")
     expect(listing.lines.grep(/README/).first).to include("2021-03-04 05:06")
+  end
+
+  it "refuses an archive the server does not have, and a package set patch leaving the package, without output" do
+    run = relspec("plan", "specs/missing.yml", chdir: @base)
+    expect(run.exit_code).to eq(1)
+    expect(run.stderr).to include("error[archive-import]: external/missing: #{@server.url}/missing-1.0.tar.gz answered 404")
+    run = relspec("compile", "specs/escape.yml", "--out", "escape", chdir: @base)
+    expect(run.exit_code).to eq(1)
+    expect(run.stderr).to include("error[package-set-patch]: package set patch autoproj/evil.patch names no file inside " \
+                                  "the package's folder")
+    expect(run.stderr).not_to match(/backtrace|\.rb:\d/)
+    expect(Dir[File.join(@base, "escape", "**", "*.dsc")]).to eq([])
   end
 end
