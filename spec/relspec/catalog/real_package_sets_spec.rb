@@ -72,6 +72,13 @@ RSpec.describe "the real Rock package sets" do
       .to eq([[".autoproj/remotes/github__rock_core_package_set_git/patches/class_loader_pkgconfig.patch", 0]])
     expect(patches.first.content).to include("+Requires: console_bridge @PKGCONFIG_REQUIRES@")
     expect(catalog_of.package("base/cmake").patches).to eq([])
+    # a snapshot carries the patch byte for byte, and autoproj's exclusion reasons
+    Dir.mktmpdir("relspec-real-snapshot") do |dir|
+      path = File.join(dir, "catalog.yml")
+      File.write(path, Relspec::Catalog::SnapshotSource.dump(catalog_of))
+      expect(Relspec::Catalog::SnapshotSource.load(path)).to eq(catalog_of)
+      expect(Relspec::Catalog::SnapshotSource.load(path).exclusion_reasons).to include("ocl" => /USE_OCL/)
+    end
   end
 
   it "gives oroGen packages the generator words autoproj would, from both package sets" do
