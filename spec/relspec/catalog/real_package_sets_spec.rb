@@ -67,16 +67,17 @@ RSpec.describe "the real Rock package sets" do
   end
 
   it "carries rock.core's import patch of tools/class_loader with its level and text" do
-    patches = catalog_of.package("tools/class_loader").patches
+    catalog = catalog_of
+    patches = catalog.package("tools/class_loader").patches
     expect(patches.map { |patch| [patch.path, patch.level] })
       .to eq([[".autoproj/remotes/github__rock_core_package_set_git/patches/class_loader_pkgconfig.patch", 0]])
     expect(patches.first.content).to include("+Requires: console_bridge @PKGCONFIG_REQUIRES@")
-    expect(catalog_of.package("base/cmake").patches).to eq([])
+    expect(catalog.package("base/cmake").patches).to eq([])
     # a snapshot carries the patch byte for byte, and autoproj's exclusion reasons
     Dir.mktmpdir("relspec-real-snapshot") do |dir|
       path = File.join(dir, "catalog.yml")
-      File.write(path, Relspec::Catalog::SnapshotSource.dump(catalog_of))
-      expect(Relspec::Catalog::SnapshotSource.load(path)).to eq(catalog_of)
+      File.write(path, Relspec::Catalog::SnapshotSource.dump(catalog))
+      expect(Relspec::Catalog::SnapshotSource.load(path)).to eq(catalog)
       expect(Relspec::Catalog::SnapshotSource.load(path).exclusion_reasons).to include("ocl" => /USE_OCL/)
     end
   end
