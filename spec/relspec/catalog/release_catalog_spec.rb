@@ -148,6 +148,17 @@ RSpec.describe Relspec::Catalog::ReleaseCatalog do
       )
     end
 
+    it "shows the chain in plan and why" do
+      with_specs("rel" => "release: rel\nworkspace: #{@gaps_root}\ntargets: { buster: [amd64] }\nselect: [slam.weak]\n") do |dir|
+        plan = relspec("plan", File.join(dir, "rel.yml"))
+        expect(plan.exit_code).to eq(0), plan.stderr
+        expect(plan.stdout).to match(%r{slam/maps +excluded by autoproj: needs a newer PCL})
+        why = relspec("why", File.join(dir, "rel.yml"), "slam/app", "--target", "buster/amd64")
+        expect(why.stdout).to eq("buster/amd64: slam/app cannot be built there, because:\n  depends on slam/core\n    " \
+                                 "└ depends on slam/maps\n      └ excluded by autoproj: needs a newer PCL\n")
+      end
+    end
+
     it "refuses a strong metapackage, or a package, that needs an excluded package, naming the chain" do
       expect(errors_of("select: [slam.strong]", workspace: @gaps_root)).to include(
         "unavailable-selection: slam.strong is selected, but its package slam/app cannot be built on buster: it " \
