@@ -5,6 +5,9 @@ require "fileutils"
 require "json"
 require "time"
 require "uri"
+require "stringio"
+require "zlib"
+require "rubygems/package"
 require_relative "../atomic_file"
 require_relative "../diagnostic"
 require_relative "../error"
@@ -23,6 +26,7 @@ module Relspec
     # and so into the lock. Delete the cache entry to fetch it again.
     class ArchiveImport
       MAX_BYTES = 1 << 30
+      REDIRECTS = 3
       SCHEMES = %w[http https file].freeze
 
       # +cache+: the folder of fetched archives; +timeout+: seconds per
@@ -104,17 +108,18 @@ module Relspec
         fail_with(package, "cannot read the archive #{path}: #{e.message}", "check the package set's url")
       end
 
-      def read_http(package, uri)
+      # Follows a few redirects (release archives on forges are served
+      # from elsewhere), to http(s) only.
+      def read_http(package, uri, redirects = REDIRECTS)
         @client.get(uri) do |response|
-          unless response.is_a?(Net::HTTPOK)
-            fail_with(package, "#{uri} answered #{response.code} #{response.message}".strip, "check the package set's url")
+          case response
+          when Net::HTTPOK
+            body = Http::CappedBody.read(response, MAX_BYTES)
+            modified = response["Last-Modified"]
+            [body, modified ? Time.httpdate(modified) : newest_member_time(package, uri, body)]
+          when Net::HTTPRedirection then follow(package, uri, response, redirects)
+          else fail_with(package, "#{uri} answered #{response.code} #{response.message}".strip, "check the package set's url")
           end
-          modified = response["Last-Modified"]
-          unless modified
-            fail_with(package, "#{uri} gives no Last-Modified time, which versions the archive",
-                      "serve it from a server that sends Last-Modified, or put it in a git repository")
-          end
-          [Http::CappedBody.read(response, MAX_BYTES), Time.httpdate(modified)]
         end
       rescue Http::CappedBody::TooLarge
         fail_with(package, "the archive at #{uri} is larger than #{MAX_BYTES >> 20} MiB", "check the package set's url")
@@ -122,6 +127,31 @@ module Relspec
         fail_with(package, "#{uri} gives a Last-Modified time that is not an HTTP date", "check the server")
       rescue SystemCallError, IOError, Timeout::Error, OpenSSL::SSL::SSLError, SocketError => e
         fail_with(package, "cannot fetch #{uri}: #{e.message}", "check the url and the network")
+      end
+
+      def follow(package, uri, response, redirects)
+        target = response["location"] && uri.merge(response["location"])
+        unless target && %w[http https].include?(target.scheme) && redirects.positive?
+          fail_with(package, "#{uri} redirects to #{response['location'].inspect}, which is not followed",
+                    "use the archive's final url")
+        end
+        read_http(package, target, redirects - 1)
+      end
+
+      # Without Last-Modified (forges' generated archives), the newest time
+      # of the archive's files: the same bytes give the same time. Read for
+      # tar and tar.gz archives.
+      def newest_member_time(package, uri, body)
+        io = StringIO.new(body)
+        io = Zlib::GzipReader.new(io) if body.start_with?("\x1F\x8B".b)
+        times = []
+        Gem::Package::TarReader.new(io) { |tar| tar.each { |entry| times << entry.header.mtime } }
+        raise Gem::Package::TarInvalidError, "no files" if times.empty?
+
+        Time.at(times.max).utc
+      rescue Zlib::Error, Gem::Package::TarInvalidError, ArgumentError
+        fail_with(package, "#{uri} gives no Last-Modified time, and its files' times cannot be read (not a tar or tar.gz)",
+                  "serve it from a server that sends Last-Modified, or put it in a git repository")
       end
 
       def fail_with(package, message, hint)

@@ -4,6 +4,7 @@ require_relative "../unit_helper"
 require "tmpdir"
 require "relspec/catalog/package"
 require "relspec/catalog/archive_import"
+require_relative "../../support/http_server"
 
 RSpec.describe Relspec::Catalog::ArchiveImport do
   around do |example|
@@ -55,5 +56,28 @@ RSpec.describe Relspec::Catalog::ArchiveImport do
         expect(e.diagnostics.first.message).to start_with("external/x: ")
       end
     end
+  end
+
+  # a real server on 127.0.0.1 (a thread): a redirect, then no Last-Modified
+  it "follows a redirect and, without Last-Modified, takes the newest time of the archive's files" do
+    served = File.join(@dir, "served", "redir")
+    FileUtils.mkdir_p(served)
+    tarball = StringIO.new
+    Zlib::GzipWriter.wrap(tarball) do |gzip|
+      Gem::Package::TarWriter.new(gzip) { |tar| tar.add_file_simple("x-1.0/README", 0o644, 2) { |io| io.write("x\n") } }
+    end
+    File.binwrite(File.join(served, "x-1.0.tar.gz"), tarball.string)
+    # what a Last-Modified would say, were it sent
+    File.utime(Time.utc(2001), Time.utc(2001), File.join(served, "x-1.0.tar.gz"))
+    server = HttpServer.new(File.dirname(served))
+    server.fail(%r{\A/redir/}, :redirect)
+    server.fail(%r{\A/moved/}, :no_last_modified)
+    resolved = import.resolve(package("#{server.url}/redir/x-1.0.tar.gz"))
+    expect(server.requests).to eq(["/redir/x-1.0.tar.gz", "/moved/redir/x-1.0.tar.gz"])
+    expect(resolved.vcs.sha256).to eq(Digest::SHA256.hexdigest(tarball.string))
+    # TarWriter dates its files now: the time comes from them, not from the server
+    expect(Time.parse(resolved.commit_time)).to be_within(120).of(Time.now)
+  ensure
+    server&.stop
   end
 end
