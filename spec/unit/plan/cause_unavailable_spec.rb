@@ -3,6 +3,7 @@
 require_relative "../unit_helper"
 require "relspec/plan/cause"
 
+# (a file of its own: main has spec/unit/plan/cause_spec.rb for the other causes)
 RSpec.describe Relspec::Plan::Cause do
   it "says why autoproj's exclusions and osdeps of other systems make a package unavailable, down the chain" do
     excluded = described_class.excluded("USE_OCL is set to false")
