@@ -24,8 +24,10 @@ class HttpServer
     "http://127.0.0.1:#{@server.config[:Port]}"
   end
 
-  # +fault+: 404, 500, :stall (no answer for +seconds+) or :redirect (302
-  # to the same path below /moved/), for paths matching +pattern+.
+  # +fault+: 404, 500, :stall (no answer for +seconds+), :redirect (302
+  # to the same path below /moved/) or :no_last_modified (the file without
+  # a Last-Modified header, as forges' generated archives), for paths
+  # matching +pattern+.
   def fail(pattern, fault, seconds: 5)
     @faults[pattern] = [fault, seconds]
   end
@@ -46,11 +48,13 @@ class HttpServer
     when :stall then sleep(seconds)
     when :redirect then response.set_redirect(WEBrick::HTTPStatus::Found, "#{url}/moved#{path}")
     end
-    return if fault
+    return if fault && fault != :no_last_modified
 
     file = File.join(@root, path.sub(%r{\A/[^/]+/(?=dists/)}, "/").delete_prefix("/moved"))
     if File.file?(file)
       response.body = File.binread(file)
+      # as a web server serving files does: archive imports are versioned by it
+      response["Last-Modified"] = File.mtime(file).httpdate unless fault == :no_last_modified
     else
       response.status = 404
     end

@@ -37,8 +37,15 @@ class RealRockWorkspace
     "tools/orogen_metadata" => ["tools-orogen_metadata", "tools/orogen_metadata"],
     "tools/orocos.rb" => ["tools-orocosrb", "tools/orocos.rb"],
     "tools/service_discovery" => ["tools-service_discovery", "tools/service_discovery"],
-    "stdint_typekit" => %w[stdint_typekit stdint_typekit]
+    "stdint_typekit" => %w[stdint_typekit stdint_typekit],
+    # rock.core patches class_loader at import (patches/class_loader_pkgconfig.patch)
+    "tools/class_loader" => ["class_loader", "tools/class_loader"],
+    "base/console_bridge" => ["base-console_bridge", "base/console_bridge"],
+    # needs qtruby, which rock.core's osdeps define for Ubuntu and Gentoo only
+    "gui/vizkit" => ["gui-vizkit", "gui/vizkit"]
   }.freeze
+  # what autoproj checks out where the repository has no HEAD branch (class_loader: `tag: 0.3.8`)
+  CHECKOUTS = { "tools/class_loader" => "0.3.8" }.freeze
 
   def self.available?
     (PACKAGE_SETS.values + PACKAGES.values.map(&:first)).all? { |bundle| File.file?(bundle_path(bundle)) }
@@ -75,7 +82,8 @@ class RealRockWorkspace
     PACKAGE_SETS.each { |github, bundle| git("clone", "-q", self.class.bundle_path(bundle), remote_dir(github)) }
     PACKAGES.each do |name, (bundle, dir)|
       git("clone", "-q", "--mirror", self.class.bundle_path(bundle), repository(name))
-      git("clone", "-q", "-o", "autobuild", repository(name), File.join("src", dir))
+      branch = CHECKOUTS[name] ? ["-b", CHECKOUTS[name]] : []
+      git("clone", "-q", "-o", "autobuild", *branch, repository(name), File.join("src", dir))
     end
     root
   end

@@ -36,6 +36,7 @@ class WorkspaceBuilder
     @excluded = []
     @ignored = []
     @osdeps = ""
+    @autobuild = ""
   end
 
   # +files+ are extra source files (path => content); +osdeps+ are OS
@@ -70,6 +71,12 @@ class WorkspaceBuilder
     @osdeps = yaml
   end
 
+  # Ruby added to the package set's packages.autobuild, verbatim (an
+  # exclusion, a weak metapackage).
+  def autobuild(code)
+    @autobuild += code
+  end
+
   def create
     raise ArgumentError, "#{root} already exists" if File.exist?(root)
 
@@ -80,7 +87,7 @@ class WorkspaceBuilder
 
   # The workspace as +other+ defines it, made here with git.
   def build_like(other)
-    @packages, @metapackages, @layout, @excluded, @ignored, @osdeps = other.definition
+    @packages, @metapackages, @layout, @excluded, @ignored, @osdeps, @autobuild = other.definition
     write_config
     write_package_set
     @packages.each_value { |package| create_repository(package) }
@@ -90,7 +97,7 @@ class WorkspaceBuilder
 
   # What the workspace holds, whatever folder it is made in.
   def definition
-    [@packages, @metapackages, @layout, @excluded, @ignored, @osdeps]
+    [@packages, @metapackages, @layout, @excluded, @ignored, @osdeps, @autobuild]
   end
 
   def repository(name)
@@ -157,7 +164,7 @@ class WorkspaceBuilder
   def autobuild_definitions
     definitions = @packages.values.map { |package| "#{DEFINITIONS.fetch(package.type)} '#{package.name}'\n" }
     metas = @metapackages.map { |name, members| "metapackage '#{name}', #{members.map { |m| "'#{m}'" }.join(', ')}\n" }
-    (definitions + metas).join
+    (definitions + metas).join + @autobuild
   end
 
   def create_repository(package)

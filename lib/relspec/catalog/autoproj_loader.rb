@@ -14,6 +14,8 @@ require_relative "copyright_holders"
 require_relative "package_environment"
 require_relative "orogen_arguments"
 require_relative "cmake_defines"
+require_relative "import_patch"
+require_relative "autoproj_osdeps"
 
 module Relspec
   class Catalog
@@ -185,6 +187,7 @@ module Relspec
         # default.osdeps does not define.
         resolver.add_entries({ ws.ruby_version_keyword => "ignore" }) unless resolver.include?(ws.ruby_version_keyword)
         ws.load_package_sets(only_local: true, checkout_only: true)
+        AutoprojOsdeps.warn_spaced_keys(resolver)
         ws.setup_all_package_directories
         ws.finalize_package_setup
         ws.manifest.each_package_definition do |definition|
@@ -242,7 +245,7 @@ module Relspec
         packages = {}
         os_dependencies = {}
         # every osdep name is resolved once per load, however many packages use it
-        resolved = Hash.new { |cache, name| cache[name] = classify(ws.os_package_resolver, name) }
+        resolved = Hash.new { |cache, name| cache[name] = AutoprojOsdeps.classify(ws.os_package_resolver, name) }
         manifest.each_package_definition do |definition|
           packages[definition.name] = package_data(ws, definition)
           # a pinned commit's manifest is named as the checkout's file, not the temporary copy
@@ -259,7 +262,7 @@ module Relspec
       def os_dependencies_of(autobuild, resolved)
         _, optional = autobuild.partition_optional_dependencies
         optional -= autobuild.os_packages.to_a
-        kept, missing = optional.partition { |name| !resolved[name].keys.intersect?(%w[nonexistent unresolved]) }
+        kept, missing = optional.partition { |name| !resolved[name].keys.intersect?(%w[nonexistent other_os unresolved]) }
         merged = merge_classified((autobuild.os_packages.to_a + kept).sort.map { |name| resolved[name] })
         merged["optional_missing"] = missing.sort unless missing.empty?
         merged
@@ -276,7 +279,10 @@ module Relspec
           "metapackages" => metapackages, "layout" => manifest.normalized_layout.keys,
           # the manifest's exclusions and the package sets' (add_exclusion)
           "excluded" => manifest.each_excluded_package.map(&:name).sort,
-          "ignored" => manifest.each_ignored_package.map(&:name).sort
+          "ignored" => manifest.each_ignored_package.map(&:name).sort,
+          "exclusion_reasons" => manifest.each_excluded_package.to_h { |pkg| [pkg.name, manifest.exclusion_reason(pkg.name)] },
+          # metapackages whose unavailable members are dropped rather than an error (Metapackage#weak_dependencies?)
+          "weak_metapackages" => manifest.each_metapackage.select(&:weak_dependencies?).map(&:name).sort
         }
       end
 
@@ -289,7 +295,7 @@ module Relspec
           "checked_out" => definition.checked_out?, "dependencies" => autobuild.dependencies.sort,
           "optional_dependencies" => optional_packages.sort, "defines" => CmakeDefines.of(autobuild, root_dir: ws.root_dir),
           "environment" => PackageEnvironment.of(autobuild, root_dir: ws.root_dir),
-          "orogen_arguments" => OrogenArguments.of(autobuild)
+          "orogen_arguments" => OrogenArguments.of(autobuild), "patches" => ImportPatch.list_of(autobuild.importer) { |path| relative(ws, path) }
         }.compact.merge(manifest_data(ws, autobuild.description))
       end
 
@@ -328,34 +334,10 @@ module Relspec
         path.to_s.delete_prefix("#{ws.root_dir}/")
       end
 
-      # {"apt" => […], "gems" => […], …} for one osdep name.
-      def classify(resolver, name)
-        result = Hash.new { |hash, key| hash[key] = [] }
-        case resolver.availability_of(name)
-        when Autoproj::OSPackageResolver::NONEXISTENT then result["nonexistent"] << name
-        when Autoproj::OSPackageResolver::IGNORE then result["ignored"] << name
-        when Autoproj::OSPackageResolver::AVAILABLE then add_resolved(resolver, name, result)
-        else result["unresolved"] << name
-        end
-        result
-      end
-
       def merge_classified(parts)
         merged = Hash.new { |hash, key| hash[key] = [] }
         parts.each { |part| part.each { |kind, names| merged[kind].concat(names) } }
         merged.transform_values { |names| names.uniq.sort }
-      end
-
-      def add_resolved(resolver, name, result)
-        resolver.resolve_package(name).each do |handler, status, names|
-          next unless status == Autoproj::OSPackageResolver::FOUND_PACKAGES
-
-          case handler
-          when resolver.os_package_manager then result["apt"].concat(names)
-          when "gem" then result["gems"].concat(names)
-          else result["unresolved"] << name
-          end
-        end
       end
     end
   end

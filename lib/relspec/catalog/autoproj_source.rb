@@ -112,12 +112,14 @@ module Relspec
             maintainer: entry["maintainer"], copyright: entry["copyright"], dependencies: entry["dependencies"],
             optional_dependencies: entry["optional_dependencies"], defines: entry["defines"],
             environment: entry["environment"], orogen_arguments: entry["orogen_arguments"],
+            patches: entry.fetch("patches", []).map { |patch| ImportPatch.from_h(patch) },
             os_dependencies: entry["os_dependencies"].transform_values { |deps| OsDependencies.from_h(deps) }
           )
           [name, package]
         end
         Catalog.new(packages: packages, metapackages: data["metapackages"], layout: data["layout"],
-                    excluded: data["excluded"], ignored: data["ignored"], codenames: @distributions.keys)
+                    excluded: data["excluded"], ignored: data["ignored"], codenames: @distributions.keys,
+                    exclusion_reasons: data["exclusion_reasons"], weak_metapackages: data["weak_metapackages"])
       end
     end
   end

@@ -80,7 +80,8 @@ module Relspec
       def loader_version
         @loader_version ||= Digest::SHA256.hexdigest(
           %w[autoproj_loader.rb autoproj_source.rb package.rb package_environment.rb orogen_arguments.rb cmake_defines.rb
-             snapshot_source.rb].map { |f| File.read(File.join(__dir__, f)) }.join
+             snapshot_source.rb import_patch.rb os_dependencies.rb autoproj_osdeps.rb
+             ../catalog.rb].map { |f| File.read(File.join(__dir__, f)) }.join
         )
       end
 

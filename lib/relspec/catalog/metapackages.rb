@@ -20,9 +20,7 @@ module Relspec
 
         everywhere = selections.values.map(&:names).reduce(:|)
         packages = metas.to_h { |name| [name, meta_package(catalog, name, everywhere)] }
-        extended = Catalog.new(packages: catalog.packages.merge(packages), metapackages: catalog.metapackages,
-                               layout: catalog.layout, excluded: catalog.excluded, ignored: catalog.ignored,
-                               codenames: catalog.codenames)
+        extended = catalog.with_packages(catalog.packages.merge(packages))
         names = selections.transform_values { |selection| (selection.names + metas).sort.freeze }
         [extended, names]
       end

@@ -5,11 +5,13 @@ module Relspec
     # The OS dependencies of one package resolved for one distribution, as
     # autoproj's osdeps resolve them: Debian packages, gems, names the
     # distribution does not need (ignore), names it cannot provide
-    # (nonexistent) and names no osdeps file defines for it (unresolved);
+    # (nonexistent), names the osdeps files define for other systems only
+    # (other_os: autoproj's WRONG_OS, unavailable here as nonexistent ones
+    # are) and names no osdeps file defines at all (unresolved);
     # optional ones the distribution cannot provide are left out, as
     # autoproj leaves them out, and listed (optional_missing) for plan.
     class OsDependencies
-      FIELDS = %w[apt gems ignored nonexistent unresolved optional_missing].freeze
+      FIELDS = %w[apt gems ignored nonexistent other_os unresolved optional_missing].freeze
 
       attr_reader(*FIELDS)
 
@@ -21,11 +23,12 @@ module Relspec
         build(**FIELDS.to_h { |field| [field.to_sym, hash.fetch(field, [])] })
       end
 
-      def initialize(apt:, gems:, ignored:, nonexistent:, unresolved:, optional_missing: [])
+      def initialize(apt:, gems:, ignored:, nonexistent:, unresolved:, other_os: [], optional_missing: [])
         @apt = apt.uniq.sort.freeze
         @gems = gems.uniq.sort.freeze
         @ignored = ignored.uniq.sort.freeze
         @nonexistent = nonexistent.uniq.sort.freeze
+        @other_os = other_os.uniq.sort.freeze
         @unresolved = unresolved.uniq.sort.freeze
         @optional_missing = optional_missing.uniq.sort.freeze
         freeze

@@ -40,8 +40,7 @@ module Relspec
         @pins.each_key { |name| unknown(name) unless @catalog.package?(name) }
         raise InvalidInput, @problems unless @problems.empty?
 
-        Catalog.new(packages: packages, metapackages: @catalog.metapackages, layout: @catalog.layout,
-                    excluded: @catalog.excluded, ignored: @catalog.ignored, codenames: @catalog.codenames)
+        @catalog.with_packages(packages)
       end
 
       private

@@ -7,6 +7,8 @@ require_relative "selection"
 require_relative "metapackages"
 require_relative "release_gems"
 require_relative "gem_resolution"
+require_relative "archive_import"
+require_relative "../cache_dir"
 require_relative "../display_path"
 require_relative "../release_spec/package_pattern"
 require_relative "../suggestion"
@@ -61,11 +63,22 @@ module Relspec
         pinned = Pinning.apply(catalog, pins, root: root,
                                               locate: ->(name) { effective.pin_origin(name)&.location })
         selections = select_all(pinned, effective, spec_file, workspace)
+        pinned = import_archives(pinned, selections, timeout)
         catalog, names = Metapackages.add(pinned, effective.select, selections)
         gem_fetch ||= ReleaseGems.fetcher(effective, File.dirname(resolution.spec_file.path), timeout: timeout)
         resolved = resolve_gems(catalog, names, resolution, gem_fetch, gem_archives, locked_gems, timeout)
         catalog, names, gems = add_gems(catalog, names, resolution, gem_fetch, resolved)
         new(catalog, names, selections.transform_values(&:unavailable), workspace, gems, resolved)
+      end
+
+      # Archive imports of the release get their archive's time and
+      # checksum (ArchiveImport): their version is made of them.
+      def self.import_archives(catalog, selections, timeout)
+        names = selections.values.flat_map(&:names).uniq.select { |name| catalog.package(name).build_type == "archive" }
+        return catalog if names.empty?
+
+        import = ArchiveImport.new(cache: CacheDir.for("archives"), timeout: timeout)
+        catalog.with_packages(catalog.packages.merge(names.to_h { |name| [name, import.resolve(catalog.package(name))] }))
       end
 
       def self.workspace_path(spec_file, effective)
@@ -131,7 +144,7 @@ module Relspec
         ReleaseGems.add(catalog, gems, names, fetch: fetch, locate: locate, provided: resolved.provided)
       end
 
-      private_class_method :workspace_path, :select_all, :resolve_gems, :add_gems
+      private_class_method :workspace_path, :select_all, :resolve_gems, :add_gems, :import_archives
 
       def initialize(catalog, names, unavailable, workspace, gems, gem_resolution = GemResolution::NONE)
         @catalog = catalog

@@ -33,8 +33,7 @@ module Relspec
         packages = archives.to_h { |name, archive| [name, package_of(archive, archives, catalog.codenames)] }
         provided.each { |name| packages[name] = provided_package(name, gems.fetch(name), catalog.codenames) }
         users = catalog.packages.transform_values { |package| with_gem_dependencies(package, packages.keys, catalog.codenames) }
-        extended = Catalog.new(packages: users.merge(packages), metapackages: catalog.metapackages, layout: catalog.layout,
-                               excluded: catalog.excluded, ignored: catalog.ignored, codenames: catalog.codenames)
+        extended = catalog.with_packages(users.merge(packages))
         [extended, names.transform_values { |list| (list + packages.keys).uniq.sort.freeze }, archives]
       end
 

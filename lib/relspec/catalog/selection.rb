@@ -10,20 +10,37 @@ module Relspec
     # metapackages; default the workspace layout) and, recursively, their
     # dependencies, honouring autoproj's excluded and ignored packages.
     #
-    # A package whose OS dependency is `nonexistent` on the codename cannot
-    # be built there, and neither can what requires it; autoproj excludes
-    # them the same way, and the spec's `leave_out` entries work the same
-    # way. They are left out of +names+ and kept in +unavailable+ with the
-    # reason, so a release can span distributions where part of the stack
-    # does not exist.
+    # A package whose OS dependency is `nonexistent` on the codename, or
+    # defined for other systems only, cannot be built there, nor can a
+    # package autoproj excludes, nor what requires one of them; autoproj
+    # excludes them the same way, and the spec's `leave_out` entries work
+    # the same way. They are left out of +names+ and kept in +unavailable+
+    # with the reason, so a release can span distributions where part of
+    # the stack does not exist.
+    #
+    # As in autoproj (PackageSelection#filter_excluded_and_ignored_packages),
+    # selecting a package that is unavailable because of an exclusion or
+    # an OS dependency of other systems is an error, and so is selecting a
+    # metapackage with such a member unless the metapackage is weak
+    # (`weak_dependencies`, as the rock package set's `rock`). The spec's
+    # `leave_out` and osdeps' `nonexistent` are statements about a
+    # distribution: what they remove is a gap, never an error.
     class Selection
       attr_reader :names, :roots, :unavailable
 
       # Why a package is unavailable on the codename: its own +osdeps+
-      # marked nonexistent there, the spec's `leave_out` entry that leaves
-      # it out (+left_out+: ReleaseSpec::LeaveOut::Entry), or a required
-      # +dependency+ that is unavailable itself.
-      Unavailable = Struct.new(:osdeps, :left_out, :dependency, keyword_init: true)
+      # marked nonexistent there, its +other_os+ osdeps (defined for other
+      # systems only), its exclusion by autoproj (+excluded+: the reason), the
+      # spec's `leave_out` entry that leaves it out (+left_out+:
+      # ReleaseSpec::LeaveOut::Entry), or a required +dependency+ that is
+      # unavailable itself.
+      Unavailable = Struct.new(:osdeps, :left_out, :dependency, :excluded, :other_os, keyword_init: true) do
+        # Whether autoproj refuses to build a selection needing it (a
+        # `leave_out` or a nonexistent osdep is a gap of the distribution).
+        def refused?
+          !excluded.nil? || !Array(other_os).empty?
+        end
+      end
 
       # +select+: names from the spec, or nil for the layout; +codename+: the
       # target whose OS dependencies must all resolve; +locate+: name =>
@@ -44,9 +61,11 @@ module Relspec
         @leave_out = leave_out
         @fallback = Location.file_only(workspace)
         @problems = []
-        @roots = expand_roots(select || catalog.layout)
+        requested = select || catalog.layout
+        @roots = expand_roots(requested)
         selected = closure(@roots)
         @unavailable = unavailable_among(selected).freeze
+        requested.each { |name| check_requested(name, select ? "selected" : "in the layout") }
         # what only unavailable packages needed is not part of the release there
         @names = @unavailable.empty? ? selected : closure(@roots, skip: @unavailable)
         @names.each { |name| check_buildable(@catalog.package(name)) }
@@ -69,7 +88,8 @@ module Relspec
       def expand_roots(requested)
         requested.flat_map do |name|
           if @catalog.metapackage?(name)
-            @catalog.metapackages[name].reject { |member| dropped?(member) }
+            # excluded members stay: they are unavailable, and an error in a strong metapackage
+            @catalog.metapackages[name].reject { |member| ignored?(member) }
           elsif @catalog.package?(name)
             if excluded?(name)
               problem("excluded-package", "#{name} is selected but excluded by the workspace manifest",
@@ -85,14 +105,14 @@ module Relspec
 
       def closure(roots, skip: {})
         seen = {}
-        queue = roots.reject { |name| excluded?(name) || ignored?(name) }
+        queue = roots.reject { |name| ignored?(name) }
         until queue.empty?
           name = queue.shift
           next if seen[name] || skip.key?(name)
 
           seen[name] = true
-          # what only a left-out package needs is not part of the release
-          next if @leave_out.call(name)
+          # what only a left-out or excluded package needs is not part of the release
+          next if @leave_out.call(name) || excluded?(name)
 
           package = @catalog.package(name)
           queue.concat(required(package))
@@ -111,8 +131,15 @@ module Relspec
             found[name] = Unavailable.new(left_out: entry).freeze
             next
           end
-          missing = @catalog.package(name).os_dependencies_for(@codename).nonexistent
-          found[name] = Unavailable.new(osdeps: missing).freeze unless missing.empty?
+          if excluded?(name)
+            found[name] = Unavailable.new(excluded: @catalog.exclusion_reasons[name] || "excluded by autoproj").freeze
+            next
+          end
+          os = @catalog.package(name).os_dependencies_for(@codename)
+          next if os.nonexistent.empty? && os.other_os.empty?
+
+          found[name] = Unavailable.new(osdeps: os.nonexistent.empty? ? nil : os.nonexistent,
+                                        other_os: os.other_os.empty? ? nil : os.other_os).freeze
         end
         frontier = found.keys
         until frontier.empty?
@@ -131,14 +158,57 @@ module Relspec
         package.dependencies.filter_map do |dependency|
           next if ignored?(dependency)
 
-          if excluded?(dependency)
-            problem("excluded-dependency", "#{package.name} depends on #{dependency}, which the workspace manifest excludes")
-          elsif !@catalog.package?(dependency)
-            problem("unknown-dependency", "#{package.name} depends on #{dependency}, which the workspace does not define")
-          else
+          if @catalog.package?(dependency)
             dependency
+          else
+            problem("unknown-dependency", "#{package.name} depends on #{dependency}, which the workspace does not define")
           end
         end
+      end
+
+      # autoproj's rule for a selection whose packages cannot be built here.
+      def check_requested(name, how)
+        if @catalog.metapackage?(name)
+          members = @catalog.metapackages[name].reject { |member| ignored?(member) }
+          refused = members.select { |member| refused?(member) }
+          return if refused.empty? || (@catalog.weak?(name) && refused.size < members.size)
+
+          refused.each do |member|
+            problem("unavailable-selection", "#{name} is #{how}, but its package #{member} cannot be built on " \
+                                             "#{@codename}: #{explain(member)}",
+                    location: @locate.call(name), hint: metapackage_hint(name, refused.size == members.size))
+          end
+        elsif @catalog.package?(name) && !excluded?(name) && refused?(name)
+          problem("unavailable-selection", "#{name} is #{how}, but cannot be built on #{@codename}: #{explain(name)}",
+                  location: @locate.call(name), hint: "select what needs it instead, or leave it out (`leave_out`)")
+        end
+      end
+
+      def metapackage_hint(name, all)
+        return "every package of #{name} is unavailable here: leave them out (`leave_out`)" if all
+
+        "autoproj refuses this too, unless #{name} has weak dependencies; select its other packages, or leave " \
+          "these out (`leave_out`)"
+      end
+
+      def refused?(name)
+        reason = @unavailable[name]
+        reason = @unavailable[reason.dependency] while reason&.dependency
+        reason&.refused? || false
+      end
+
+      # "it requires a, which requires b, which is excluded (reason)"
+      def explain(name)
+        steps = []
+        reason = @unavailable.fetch(name)
+        while reason.dependency
+          steps << "requires #{reason.dependency}"
+          reason = @unavailable.fetch(reason.dependency)
+        end
+        root = if reason.excluded then "is excluded (#{reason.excluded})"
+               else "needs the osdep #{reason.other_os.join(', ')}, which the osdeps files define for other systems only"
+               end
+        "it #{(steps + [root]).join(', which ')}"
       end
 
       def dropped?(name)

@@ -42,7 +42,11 @@ module Relspec
       end
 
       def check_top(data, check)
-        %w[codenames layout excluded ignored].each { |key| list_of_text(data, [key], check) }
+        %w[codenames layout excluded ignored weak_metapackages].each { |key| list_of_text(data, [key], check) }
+        reasons = data.fetch("exclusion_reasons", {})
+        if hash?(reasons, ["exclusion_reasons"], check)
+          reasons.each { |name, reason| check.call(["exclusion_reasons", name], false, "text") unless TEXT.call(reason) }
+        end
         metapackages = data.fetch("metapackages", {})
         if hash?(metapackages, ["metapackages"], check)
           metapackages.each_key { |name| list_of_text(metapackages, [name], check, prefix: ["metapackages"]) }
@@ -65,6 +69,7 @@ module Relspec
         check_vcs(entry.fetch("vcs", {}), path + ["vcs"], check)
         check_os_dependencies(entry.fetch("os_dependencies", {}), path + ["os_dependencies"], check)
         check_environment(entry.fetch("environment", []), path + ["environment"], check)
+        check_patches(entry.fetch("patches", []), path + ["patches"], check)
         defines = entry.fetch("defines", {})
         return unless hash?(defines, path + ["defines"], check)
 
@@ -79,6 +84,17 @@ module Relspec
                   op["values"].is_a?(Array) && op["values"].all?(TEXT)
 
           check.call(path + [index], false, "{type: set|add|add_path, name: text, values: [text]}")
+        end
+      end
+
+      def check_patches(patches, path, check)
+        return check.call(path, false, "a list") unless patches.is_a?(Array)
+
+        patches.each_with_index do |patch, index|
+          next if patch.is_a?(Hash) && TEXT.call(patch["path"]) && TEXT.call(patch["content"]) &&
+                  patch.fetch("level", 0).is_a?(Integer) && patch.fetch("level", 0) >= 0
+
+          check.call(path + [index], false, "{path: text, level: a number from 0, content: text}")
         end
       end
 

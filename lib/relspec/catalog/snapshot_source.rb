@@ -52,7 +52,8 @@ module Relspec
         packages = data.fetch("packages", {}).to_h { |name, entry| [name, Package.from_h(name, entry)] }
         Catalog.new(packages: packages, metapackages: data.fetch("metapackages", {}), layout: data.fetch("layout", []),
                     excluded: data.fetch("excluded", []), ignored: data.fetch("ignored", []),
-                    codenames: data.fetch("codenames", []))
+                    codenames: data.fetch("codenames", []), exclusion_reasons: data.fetch("exclusion_reasons", {}),
+                    weak_metapackages: data.fetch("weak_metapackages", []))
       end
     end
   end

@@ -3,8 +3,9 @@
 module Relspec
   class Catalog
     # Where a package's source comes from. +commit+ is what the checkout holds
-    # (or what a pin fixes); branch and tag are what autoproj would follow.
-    Vcs = Struct.new(:type, :url, :branch, :tag, :commit, keyword_init: true) do
+    # (or what a pin fixes); branch and tag are what autoproj would follow;
+    # +sha256+ is the checksum of an archive import's tarball (ArchiveImport).
+    Vcs = Struct.new(:type, :url, :branch, :tag, :commit, :sha256, keyword_init: true) do
       def self.from_h(hash)
         new(**hash.transform_keys(&:to_sym)).freeze
       end

@@ -66,6 +66,8 @@ module Relspec
             why =
               if reason.dependency then "requires #{reason.dependency}"
               elsif reason.left_out then "left out by #{Printable.text(reason.left_out.pattern.source)} (#{Printable.text(reason.left_out.reason)})"
+              elsif reason.excluded then "excluded by autoproj: #{Printable.text(reason.excluded)}"
+              elsif reason.osdeps.nil? then "osdeps #{Printable.text(reason.other_os.join(', '))} defined for other systems only"
               else "osdeps #{reason.osdeps.join(', ')} nonexistent"
               end
             puts format("  %-32s unavailable on #{codename}: %s", name, why)

@@ -7,9 +7,12 @@ require_relative "orig_tarball"
 require_relative "debian_dir"
 require_relative "overlay"
 require_relative "overlay_patch"
+require_relative "package_set_patch"
 require_relative "emitted"
 require_relative "orig_cache"
 require_relative "naming"
+require_relative "../catalog/archive_import"
+require_relative "../cache_dir"
 require_relative "../atomic_file"
 require_relative "../temporaries"
 require_relative "../diagnostic"
@@ -66,7 +69,8 @@ module Relspec
 
       # What the emitted files are made of; equal stamps mean equal files.
       def stamp
-        Digest::SHA256.hexdigest([@input.package.vcs.commit, upstream, @version.to_s, @digest].join("\0"))
+        vcs = @input.package.vcs
+        Digest::SHA256.hexdigest([vcs.commit || vcs.sha256, upstream, @version.to_s, @digest].join("\0"))
       end
 
       # Writes into +dir+ unless it already holds these files. True if written.
@@ -110,8 +114,12 @@ module Relspec
       def orig_tarball
         name = Naming.orig_tarball(source, upstream)
         gem = @input.gem
-        # a gem's tarball is its own bytes: a different .gem is another cache entry
-        key = gem ? gem.sha256[0, 16] : "upstream"
+        # a gem's or an archive's tarball is its own bytes: a different one is another cache entry
+        archive = @input.package.vcs.sha256
+        key = if gem then gem.sha256[0, 16]
+              elsif archive then "archive-#{archive[0, 16]}"
+              else "upstream"
+              end
         path = File.join(@orig_cache, key, name)
         state = OrigCache.state(path)
         return path if state == :intact
@@ -131,6 +139,8 @@ module Relspec
         prefix = "#{source}-#{upstream}"
         if package.build_type == "meta"
           with_meta_tree { |tree| OrigTarball.write(path, checkout: tree, commit: nil, prefix: prefix, mtime: commit_time) }
+        elsif package.build_type == "archive"
+          with_archive_tree { |tree| OrigTarball.write(path, checkout: tree, commit: nil, prefix: prefix, mtime: commit_time) }
         elsif @input.gem
           Dir.mktmpdir("relspec-gem") do |tree|
             @input.gem.unpack(tree)
@@ -138,6 +148,20 @@ module Relspec
           end
         else
           OrigTarball.write(path, checkout: @checkout, commit: package.vcs.commit, prefix: prefix, mtime: commit_time)
+        end
+      end
+
+      # An archive import's tree, as autobuild unpacks it: the archive's
+      # single top folder, if it has one. tar refuses members that leave
+      # the folder (absolute or ../ paths).
+      def with_archive_tree
+        archive = Catalog::ArchiveImport.new(cache: CacheDir.for("archives"), timeout: 10).path_of(@input.package)
+        Dir.mktmpdir("relspec-archive") do |dir|
+          run(["tar", "-xf", archive, "-C", dir, "--no-same-owner", "--no-same-permissions"], dir)
+          children = Dir.children(dir)
+          single = children.size == 1 && File.directory?(File.join(dir, children.first)) &&
+                   !File.symlink?(File.join(dir, children.first))
+          yield single ? File.join(dir, children.first) : dir
         end
       end
 
@@ -176,16 +200,22 @@ module Relspec
         end
       end
 
-      # The overlay's files as the first patch, then its own patches.
+      # The package set's patches first (autoproj applies them at import),
+      # then the overlay's files as one patch, then the overlay's patches.
+      # The overlay's files are compared with the upstream tree, so an
+      # overlay file must not be one a package set patch changes.
       def patches_over(tree)
-        files = @overlay.files(@substitutions)
+        package = @input.package
         upstream = lambda do |path|
           file = File.join(tree, path)
           File.file?(file) && !File.symlink?(file) ? File.binread(file) : nil
         end
-        generated = OverlayPatch.of(files, upstream: upstream, package_name: @input.package.name,
-                                           overlay_dir: @overlay.dir)
-        (generated ? [[OverlayPatch::NAME, generated]] : []) + @overlay.patches(@input.package.name)
+        imported = package.patches.each_with_index.map do |patch, index|
+          PackageSetPatch.of(patch, index: index, package_name: package.name, exists: ->(path) { upstream.call(path) })
+        end
+        generated = OverlayPatch.of(@overlay.files(@substitutions), upstream: upstream, package_name: package.name,
+                                                                    overlay_dir: @overlay.dir)
+        imported + (generated ? [[OverlayPatch::NAME, generated]] : []) + @overlay.patches(package.name)
       end
 
       # mkdir -p with mode 0755 whatever the umask (the folders of debian/

@@ -45,6 +45,17 @@ module Relspec
                                  "nonexistent on #{codename}", nil)
       end
 
+      # autoproj excludes the package (+reason+: autoproj's words).
+      def self.excluded(reason)
+        new(:excluded, Printable.text(reason), nil)
+      end
+
+      # OS dependencies the osdeps files define for other systems only.
+      def self.other_os_osdeps(osdeps, codename)
+        new(:other_os_osdeps, "#{osdeps.size > 1 ? 'osdeps' : 'osdep'} #{osdeps.map { |name| Printable.text(name) }.join(', ')} " \
+                              "#{osdeps.size > 1 ? 'are' : 'is'} defined for other systems only, not #{codename}", nil)
+      end
+
       def self.left_out(match, reason)
         new(:left_out, "\"#{Printable.text(match)}\" (#{Printable.text(reason)})", nil)
       end
@@ -85,7 +96,8 @@ module Relspec
         when :pinned then "pinned to #{detail}"
         when :gem_version then "gem version #{detail}"
         when :depends_on then "depends on #{detail}, which is rebuilt because #{because}"
-        when :nonexistent_osdeps then detail
+        when :nonexistent_osdeps, :other_os_osdeps then detail
+        when :excluded then "excluded by autoproj: #{detail}"
         when :left_out then "left out by #{detail}"
         when :unavailable_dependency then "depends on #{detail}, which is unavailable because #{because}"
         end

@@ -50,8 +50,8 @@ module Relspec
       def plan
         blacklist = blacklist_patterns
         targets = Target.all(@effective)
-        decisions = targets.to_h { |target| [target, plan_target(target, blacklist)] }
         unavailable = targets.to_h { |target| [target, unavailable_on(target)] }
+        decisions = targets.to_h { |target| [target, plan_target(target, blacklist, unavailable[target])] }
         note_gems_without_archive
         ReleasePlan.new(release: @effective.release, targets: decisions, packages: package_records(decisions, unavailable),
                         release_digests: @inventory.release_digests, warnings: merged_warnings, notes: @notes.uniq.sort,
@@ -60,10 +60,9 @@ module Relspec
 
       private
 
-      def plan_target(target, blacklist)
-        selection = @selections.fetch(target.codename)
-        names = selection.names
-        names.each { |name| note_optional_missing(@catalog.package(name), target) }
+      def plan_target(target, blacklist, unavailable)
+        names = @selections.fetch(target.codename).names
+        names.each { |name| note_optional_missing(@catalog.package(name), target, unavailable) }
         providers = names.to_h { |name| [name, providers_of(@catalog.package(name), target)] }
         causes = names.to_h { |name| [name, direct_cause(@catalog.package(name), target, providers[name], blacklist)] }.compact
         system = names.to_h { |name| [name, from_distribution(@catalog.package(name), target, causes[name])] }.compact
@@ -113,6 +112,10 @@ module Relspec
               Cause.unavailable_dependency(reason.dependency, cause_of.call(reason.dependency))
             elsif reason.left_out
               Cause.left_out(reason.left_out.pattern.source, reason.left_out.reason)
+            elsif reason.excluded
+              Cause.excluded(reason.excluded)
+            elsif reason.other_os && !reason.osdeps
+              Cause.other_os_osdeps(reason.other_os, target.codename)
             else
               Cause.nonexistent_osdeps(reason.osdeps, target.codename)
             end
@@ -215,7 +218,15 @@ module Relspec
                                                 location: @spec_file.location(["workspace"]),
                                                 hint: "plan from the workspace rather than a snapshot for pins by tag or branch")]
         end
+        note_archive(package)
         Decision.new(package: package.name, kind: :build, deb_name: deb, cause: cause).freeze
+      end
+
+      # Where an archive import's source comes from (notes are said once).
+      def note_archive(package)
+        return unless (sha256 = package.vcs.sha256)
+
+        @notes << "#{package.name} is imported from the archive #{package.vcs.url} (sha256 #{sha256}, modified #{package.commit_time})"
       end
 
       def upstream(package)
@@ -252,13 +263,13 @@ module Relspec
         end
       end
 
-      # autoproj leaves out an optional OS dependency the distribution
-      # cannot provide; the package is built without it, which plan says.
-      def note_optional_missing(package, target)
-        package.os_dependencies_for(target.codename).optional_missing.each do |name|
-          @notes << "#{package.name} is built without its optional dependency #{name} on #{target.codename}: " \
-                    "the osdeps define no package for it there"
-        end
+      # autoproj leaves out an optional dependency the distribution cannot
+      # have (an osdep without package there, a package unavailable there:
+      # +unavailable+, name => Cause); the package is built without it, which plan says.
+      def note_optional_missing(package, target, unavailable)
+        why = package.os_dependencies_for(target.codename).optional_missing.to_h { |name| [name, "the osdeps define no package for it there"] }
+        (package.optional_dependencies & unavailable.keys).each { |name| why[name] = "it is unavailable there (#{unavailable[name]})" }
+        why.sort.each { |name, reason| @notes << "#{package.name} is built without its optional dependency #{name} on #{target.codename}: #{reason}" }
       end
 
       def note_shadowing(package, target, providers)
@@ -308,7 +319,7 @@ module Relspec
         names.to_h do |name|
           package = @catalog.package(name)
           vcs = package.vcs
-          [name, { "url" => vcs.url, "commit" => vcs.commit, "commit_time" => package.commit_time,
+          [name, { "url" => vcs.url, "commit" => vcs.commit, "sha256" => vcs.sha256, "commit_time" => package.commit_time,
                    "version" => upstream(package), "tag" => vcs.tag, "branch" => vcs.branch }.compact]
         end
       end

@@ -48,13 +48,23 @@ module Relspec
 
       private
 
+      # What the source package holds besides debian/ and the overlay: the
+      # package set's patches (in debian/patches) and an archive import's
+      # checksum (same modification time, other bytes: a new revision).
+      # Empty for the others, so their digests stay what they were.
+      def source_signature(package)
+        parts = package.patches.map { |patch| "#{patch.path}\0#{patch.level}\0#{patch.content}" }
+        parts << "archive\0#{package.vcs.sha256}" if package.vcs.sha256
+        parts.join("\0")
+      end
+
       def settle(target, decision, decisions)
         package = @catalog.package(decision.package)
         upstream = Debian::PackageVersion.of_package(package)
         input = @inputs.for(target, decision, upstream, decisions)
         overlay = @overlays.call(package.name, target.arch)
         digest = Digest::SHA256.hexdigest(Debian::DebianDir.digest(Debian::DebianDir.render(input, version: nil)) +
-                                          overlay.signature)
+                                          overlay.signature + source_signature(package))
         result = @versioning.settle(target: target, package: package.name, deb_name: decision.deb_name,
                                     upstream: upstream, digest: digest)
         final = Decision.new(**decision.each_pair.to_h, kind: result.published ? :published : :build,

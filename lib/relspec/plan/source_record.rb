@@ -7,7 +7,8 @@ module Relspec
     # that defines the record's fields: the planner fills them, the lock
     # writes them in this order, LockParser accepts exactly these keys, each
     # text, and the diff compares every one. A new field is a new member here.
-    SourceRecord = Struct.new(:url, :commit, :commit_time, :version, :tag, :branch, keyword_init: true) do
+    # +sha256+: an archive import's checksum (Catalog::ArchiveImport).
+    SourceRecord = Struct.new(:url, :commit, :sha256, :commit_time, :version, :tag, :branch, keyword_init: true) do
       # The keys as the lock writes them.
       def self.fields
         members.map(&:to_s)

@@ -40,6 +40,17 @@ RSpec.describe "the real Rock package sets" do
     end
   end
 
+  it "makes gui/vizkit unavailable on bookworm through qtruby (osdeps for Ubuntu and Gentoo only), with the cause" do
+    expect(catalog_of.package("gui/vizkit").os_dependencies_for("bookworm").other_os).to eq(["qtruby"])
+    with_specs("rock" => spec_text(%w[gui/vizkit])) do |dir|
+      run = relspec("plan", File.join(dir, "rock.yml"))
+      expect(run.exit_code).to eq(1)
+      expect(run.stderr).to include("error[unavailable-selection]: gui/vizkit is selected, but cannot be built on " \
+                                    "bookworm: it needs the osdep qtruby, which the osdeps files define for other systems only")
+      expect(run.stderr).not_to include("unknown-osdep")
+    end
+  end
+
   it "runs the post_import blocks: typelib depends on the castxml importer rock.core chooses" do
     os = catalog_of.package("typelib").os_dependencies_for("bookworm")
     expect(os.apt).to include("castxml")
@@ -53,6 +64,22 @@ RSpec.describe "the real Rock package sets" do
       .to eq([{ "type" => "set", "name" => "TYPELIB_PLUGIN_PATH", "values" => ["$PREFIX/lib/typelib"] },
               { "type" => "set", "name" => "TYPELIB_CXX_LOADER", "values" => ["castxml"] },
               { "type" => "add_path", "name" => "QT_PLUGIN_PATH", "values" => ["$PREFIX/lib/qt"] }])
+  end
+
+  it "carries rock.core's import patch of tools/class_loader with its level and text" do
+    catalog = catalog_of
+    patches = catalog.package("tools/class_loader").patches
+    expect(patches.map { |patch| [patch.path, patch.level] })
+      .to eq([[".autoproj/remotes/github__rock_core_package_set_git/patches/class_loader_pkgconfig.patch", 0]])
+    expect(patches.first.content).to include("+Requires: console_bridge @PKGCONFIG_REQUIRES@")
+    expect(catalog.package("base/cmake").patches).to eq([])
+    # a snapshot carries the patch byte for byte, and autoproj's exclusion reasons
+    Dir.mktmpdir("relspec-real-snapshot") do |dir|
+      path = File.join(dir, "catalog.yml")
+      File.write(path, Relspec::Catalog::SnapshotSource.dump(catalog))
+      expect(Relspec::Catalog::SnapshotSource.load(path)).to eq(catalog)
+      expect(Relspec::Catalog::SnapshotSource.load(path).exclusion_reasons).to include("ocl" => /USE_OCL/)
+    end
   end
 
   it "gives oroGen packages the generator words autoproj would, from both package sets" do

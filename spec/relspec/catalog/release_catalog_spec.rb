@@ -105,13 +105,86 @@ RSpec.describe Relspec::Catalog::ReleaseCatalog do
     expect(selections["bionic"].unavailable).to eq({})
     # gui/widgets is left out too: only gui/toolkit needed it
     expect(selections["buster"].names).to eq(%w[gui/plugins])
-    expect(selections["buster"].unavailable.transform_values(&:to_h)).to eq(
-      "gui/app" => { osdeps: nil, left_out: nil, dependency: "gui/toolkit" },
-      "gui/toolkit" => { osdeps: ["motif"], left_out: nil, dependency: nil },
-      "gui/viewer" => { osdeps: nil, left_out: nil, dependency: "gui/app" }
+    expect(selections["buster"].unavailable.transform_values { |reason| reason.to_h.compact }).to eq(
+      "gui/app" => { dependency: "gui/toolkit" }, "gui/toolkit" => { osdeps: ["motif"] },
+      "gui/viewer" => { dependency: "gui/app" }
     )
   ensure
     FileUtils.rm_rf(base)
+  end
+
+  context "with exclusions and osdeps of other systems, as autoproj spreads them" do
+    before(:all) do
+      @gaps = Dir.mktmpdir("relspec-exclusions")
+      builder = WorkspaceBuilder.new(@gaps)
+      date = "2020-01-01T00:00:00Z"
+      builder.package("slam/maps", type: :cmake, date: date)
+      builder.package("slam/core", type: :cmake, date: date, dependencies: ["slam/maps"])
+      builder.package("slam/app", type: :cmake, date: date, dependencies: ["slam/core"])
+      builder.package("slam/viewer", type: :cmake, date: date)
+      builder.package("gui/legacy", type: :cmake, date: date, osdeps: ["oldqt"])
+      builder.package("gui/shell", type: :cmake, date: date, dependencies: ["gui/legacy"])
+      builder.metapackage("slam.weak", "slam/app", "slam/viewer")
+      builder.metapackage("slam.strong", "slam/app", "slam/viewer")
+      builder.layout("slam/viewer")
+      # a package set excluding a package itself, and a weak metapackage (as rock's `rock`)
+      builder.autobuild("Autoproj.manifest.exclude_package 'slam/maps', 'needs a newer PCL'\n" \
+                        "metapackage('slam.weak').weak_dependencies = true\n")
+      # defined for Ubuntu only: autoproj's WRONG_OS on buster
+      # and a key with a space, which autoproj matches with no system
+      builder.osdeps("oldqt:\n  ubuntu: libqt4-dev\nlibfoo:\n  \"ubuntu, debian\": libfoo-dev\n")
+      builder.create
+      @gaps_root = builder.root
+    end
+
+    after(:all) { FileUtils.rm_rf(@gaps) if @gaps }
+
+    it "leaves out a weak metapackage's packages that need an excluded one, with the chain" do
+      selection = release("select: [slam.weak]", workspace: @gaps_root).selections.fetch("buster")
+      expect(selection.names).to eq(%w[slam.weak slam/viewer])
+      expect(selection.unavailable.transform_values { |reason| reason.to_h.compact }).to eq(
+        "slam/app" => { dependency: "slam/core" }, "slam/core" => { dependency: "slam/maps" },
+        "slam/maps" => { excluded: "needs a newer PCL" }
+      )
+    end
+
+    it "shows the chain in plan and why" do
+      with_specs("rel" => "release: rel\nworkspace: #{@gaps_root}\ntargets: { buster: [amd64] }\nselect: [slam.weak]\n") do |dir|
+        plan = relspec("plan", File.join(dir, "rel.yml"))
+        expect(plan.exit_code).to eq(0), plan.stderr
+        expect(plan.stdout).to match(%r{slam/maps +excluded by autoproj: needs a newer PCL})
+        why = relspec("why", File.join(dir, "rel.yml"), "slam/app", "--target", "buster/amd64")
+        expect(why.stdout).to eq("buster/amd64: slam/app cannot be built there, because:\n  depends on slam/core\n    " \
+                                 "└ depends on slam/maps\n      └ excluded by autoproj: needs a newer PCL\n")
+      end
+    end
+
+    it "refuses a strong metapackage, or a package, that needs an excluded package, naming the chain" do
+      expect(errors_of("select: [slam.strong]", workspace: @gaps_root)).to include(
+        "unavailable-selection: slam.strong is selected, but its package slam/app cannot be built on buster: it " \
+        "requires slam/core, which requires slam/maps, which is excluded (needs a newer PCL) (autoproj refuses this " \
+        "too, unless slam.strong has weak dependencies; select its other packages, or leave these out (`leave_out`))"
+      )
+      expect(errors_of("select: [slam/core]", workspace: @gaps_root).first).to start_with(
+        "unavailable-selection: slam/core is selected, but cannot be built on bionic: it requires slam/maps, which is " \
+        "excluded (needs a newer PCL)"
+      )
+    end
+
+    it "makes a package unavailable where its osdep is defined for other systems only, and its users too" do
+      catalog = nil
+      expect { catalog = release("select: [slam/viewer]", workspace: @gaps_root).catalog }
+        .to output(/osdeps key "ubuntu, debian" of libfoo in .*demo.pkgs.osdeps: autoproj splits keys at commas without removing spaces, so it matches no system; write "ubuntu,debian"/).to_stderr
+      expect(catalog.package("gui/legacy").os_dependencies_for("buster").other_os).to eq(["oldqt"])
+      expect(catalog.package("gui/legacy").os_dependencies_for("bionic").apt).to include("libqt4-dev")
+      expect(errors_of("select: [gui/shell]", workspace: @gaps_root)).to eq([
+        "unavailable-selection: gui/shell is selected, but cannot be built on buster: it requires gui/legacy, which " \
+        "needs the osdep oldqt, which the osdeps files define for other systems only (select what needs it instead, " \
+        "or leave it out (`leave_out`))"
+      ])
+      expect(release("select: [gui/shell]\nleave_out: [{ match: gui/legacy, reason: qt4, targets: [buster] }]",
+                     workspace: @gaps_root).selections.fetch("buster").unavailable.keys).to eq(%w[gui/legacy gui/shell])
+    end
   end
 
   it "requires a workspace" do

@@ -10,7 +10,10 @@ require_relative "../../support/real_rock_workspace"
 #   header without <ctime>, which GCC 12 no longer includes through
 #   <string>) is carried as a quilt patch and the patched header compiles;
 # - utilmm: its own upstream debian/ (compat 9, .install files) stays out
-#   of the generated packaging, so dh accepts it.
+#   of the generated packaging, so dh accepts it;
+# - tools/class_loader: rock.core's import patch (patches/
+#   class_loader_pkgconfig.patch, level 0) was dropped; it is now the first
+#   quilt patch of the source package, rewritten for -p1.
 RSpec.describe "source packages of the real Rock toolchain" do
   before(:all) do
     need_fixture(RealRockWorkspace.available?, RealRockWorkspace.skip_reason)
@@ -23,7 +26,7 @@ RSpec.describe "source packages of the real Rock toolchain" do
       release: rock
       maintainer: Rock Packaging <rock@example.org>
       workspace: #{@workspace.root}
-      select: [log4cpp, utilmm]
+      select: [log4cpp, utilmm, tools/class_loader]
       targets: { bookworm: [amd64] }
       distributions: { bookworm: { archive: { host: true } } }
     YAML
@@ -76,5 +79,22 @@ RSpec.describe "source packages of the real Rock toolchain" do
     # the step that failed: dh read both debian/compat and debhelper-compat
     output, status = Open3.capture2e("debian/rules", "clean", chdir: tree)
     expect(status).to be_success, output
+  end
+
+  it "carries rock.core's import patch of tools/class_loader as a quilt patch dpkg-source applies" do
+    expect(@compile.exit_code).to eq(0), @compile.stderr
+    name = "autoproj-01-class_loader_pkgconfig.patch"
+    output, tree = unpack("rock-rock-tools-class-loader")
+    expect(output).to include("applying #{name}")
+    expect(File.read(File.join(tree, "debian", "patches", "series"))).to eq("#{name}\n")
+    patch = File.read(File.join(tree, "debian", "patches", name))
+    expect(patch).to start_with("Description: .autoproj/remotes/github__rock_core_package_set_git/patches/" \
+                                "class_loader_pkgconfig.patch (package set patch of tools/class_loader")
+    expect(patch).to include("--- a/src/class_loader.pc.in\n+++ b/src/class_loader.pc.in\n")
+    expect(File.read(File.join(tree, "src", "class_loader.pc.in"))).to include("Requires: console_bridge @PKGCONFIG_REQUIRES@")
+    # the .orig is the upstream tree: the patch is not in it
+    orig = Dir[File.join(@dir, "out", "rock", "bookworm-amd64", "rock-rock-tools-class-loader", "*.orig.tar.gz")].first
+    listing, = Open3.capture2("tar", "-xzOf", orig, "--wildcards", "*/src/class_loader.pc.in")
+    expect(listing).to include("Requires: @PKGCONFIG_REQUIRES@")
   end
 end

@@ -63,6 +63,9 @@ RSpec.describe "leave_out on the real Rock layout" do
     # base/types and tools/orocos.rb only optionally depend on gui/vizkit3d and tools/pocolog: built without them
     expect(built).to include("typelib", "rtt", "rtt_typelib", "orogen", "base/orogen/std", "base/types", "tools/orocos.rb")
     expect(built & (qt4 + %w[base/orogen/types external/sisl tools/pocolog])).to eq([])
+    # and plan says so, as it does for an optional osdep the distribution lacks
+    expect(run.stdout).to include(%(base/types is built without its optional dependency gui/vizkit3d on bookworm: it is ) +
+                                  %(unavailable there (left out by "#{qt4_match}" (needs qt4, which bookworm lacks))))
   end
 
   it "explains one left-out package with `why`" do

@@ -20,7 +20,9 @@ RSpec.describe Relspec::Plan::LockParser do
     history = Relspec::Plan::History.empty.with("bookworm/amd64", "base/types",
                                                 Relspec::Debian::PackageVersion.parse("2.0-3~bookworm"), digest)
     Relspec::Plan::Lock.new(release: "r", spec_digest: "b" * 64, ancestors: { "p" => { "bookworm" => "c" * 64 } },
-                            packages: { "base/types" => { "url" => "https://example.org/t.git", "commit" => "1" * 40 } },
+                            packages: { "base/types" => { "url" => "https://example.org/t.git", "commit" => "1" * 40 },
+                                        # an archive import: its checksum instead of a commit
+                                        "external/x" => { "url" => "https://example.org/x.tar.gz", "sha256" => "e" * 64 } },
                             targets: { "bookworm/amd64" => entries }, history: history, warnings: ["w"], notes: [])
   end
   let(:text) { Relspec::Plan::LockGenerator.dump(lock) }

@@ -11,11 +11,14 @@ RSpec.describe Relspec::Plan::Settlement do
   let(:target) { Relspec::Plan::Target.new("bookworm", "amd64").freeze }
   let(:upstream) { "1.0.20200601.000000" }
   let(:graph) { { "base/cmake" => [], "base/logging" => ["base/cmake"], "base/types" => ["base/logging"] } }
-  let(:catalog) do
+  # the package set's import patches, per package
+  let(:patches) { {} }
+  # made on every call: an example may change the patches between settlements
+  def catalog
     packages = graph.to_h do |name, dependencies|
       [name, Relspec::Catalog::Package.new(
         name: name, package_set: "set", build_type: "cmake", commit_time: "2020-06-01T00:00:00Z", source_dir: "src/#{name}",
-        version: "1.0", dependencies: dependencies,
+        version: "1.0", dependencies: dependencies, patches: patches.fetch(name, []),
         vcs: Relspec::Catalog::Vcs.new(type: "git", url: "https://example.org/#{name}.git", commit: "c" * 40)
       )]
     end
@@ -110,5 +113,28 @@ RSpec.describe Relspec::Plan::Settlement do
     expect(patched.fetch(target).fetch("base/types").debian_digest)
       .not_to eq(plain.fetch(target).fetch("base/types").debian_digest)
     expect(patched.fetch(target).fetch("base/logging").debian_digest).to eq(plain.fetch(target).fetch("base/logging").debian_digest)
+  end
+
+  context "with a package set patch of base/types" do
+    def patch(content)
+      Relspec::Catalog::ImportPatch.new(path: "set/patches/fix.patch", level: 0, content: content).freeze
+    end
+
+    let(:patches) { { "base/types" => [patch("--- x\n+++ x\n@@ -1 +1 @@\n-a\n+b\n")] } }
+
+    it "takes the patch into the digest, so that changing it gives a new revision" do
+      first, = settle
+      types = first.fetch(target).fetch("base/types")
+      history = Relspec::Plan::History.empty.with_all(first.fetch(target).values.select(&:build?).map do |decision|
+        [target, decision.package, decision.version, decision.debian_digest]
+      end)
+      # the same patch: the same revision
+      same, = settle(history: history)
+      expect(same.fetch(target).fetch("base/types").version).to eq(types.version)
+      patches["base/types"] = [patch("--- x\n+++ x\n@@ -1 +1 @@\n-a\n+c\n")]
+      changed, = settle(history: history)
+      expect(changed.fetch(target).fetch("base/types").version.revision).to eq(types.version.revision + 1)
+      expect(changed.fetch(target).fetch("base/logging").version).to eq(first.fetch(target).fetch("base/logging").version)
+    end
   end
 end

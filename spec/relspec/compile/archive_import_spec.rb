@@ -1,0 +1,104 @@
+# frozen_string_literal: true
+
+require "spec_helper"
+require "zlib"
+require "rubygems/package"
+require_relative "../../support/http_server"
+
+# A package autoproj imports from a tarball (`type: archive`), served by a
+# real HTTP server on 127.0.0.1: it is planned with a version made of the
+# archive's modification time (Last-Modified), the lock records its
+# checksum, the plan says where it came from, and two compiles give the
+# same .orig bytes.
+RSpec.describe "archive imports" do
+  modified = Time.utc(2021, 3, 4, 5, 6, 7)
+
+  before(:all) do
+    @base = Dir.mktmpdir("relspec-archive")
+    served = File.join(@base, "served")
+    FileUtils.mkdir_p(served)
+    @archive = File.join(served, "tarball-1.2.tar.gz")
+    write_tarball(@archive, "tarball-1.2/CMakeLists.txt" => "project(tarball)\n", "tarball-1.2/README" => "tarball\n")
+    File.utime(modified, modified, @archive)
+    @server = HttpServer.new(served)
+    builder = WorkspaceBuilder.new(@base)
+    builder.package("base/cmake", type: :cmake, date: "2020-06-01T10:00:00Z")
+    # bad input: an archive the server does not have, and a package set
+    # patch that names a file outside the package
+    builder.autobuild("import_package 'external/tarball'\nimport_package 'external/missing'\n" \
+                      "import_package 'external/escape'\n")
+    root = builder.create
+    File.write(File.join(root, "autoproj", "evil.patch"), "--- ../../etc/passwd\n+++ ../../etc/passwd\n@@ -1 +1 @@\n-a\n+b\n")
+    File.write(File.join(root, "autoproj", "overrides.yml"), <<~YAML)
+      overrides:
+        - external/tarball: { type: archive, url: "#{@server.url}/tarball-1.2.tar.gz" }
+        - external/missing: { type: archive, url: "#{@server.url}/missing-1.0.tar.gz" }
+        - external/escape: { type: archive, url: "#{@server.url}/tarball-1.2.tar.gz", patches: [$AUTOPROJ_ROOT/autoproj/evil.patch] }
+    YAML
+    # what autoproj's import left: the archive unpacked in the source folder
+    %w[tarball missing escape].each do |name|
+      FileUtils.mkdir_p(File.join(root, "src", "external", name))
+      File.write(File.join(root, "src", "external", name, "CMakeLists.txt"), "project(#{name})\n")
+    end
+    FileUtils.mkdir_p(File.join(@base, "specs"))
+    { "r" => "tarball", "missing" => "missing", "escape" => "escape" }.each do |spec, name|
+      File.write(File.join(@base, "specs", "#{spec}.yml"), <<~YAML)
+        release: #{spec}
+        maintainer: Rock Packaging <rock@example.org>
+        workspace: ../workspace
+        select: [external/#{name}]
+        targets: { bookworm: [amd64] }
+      YAML
+    end
+  end
+
+  after(:all) do
+    @server&.stop
+    FileUtils.rm_rf(@base) if @base
+  end
+
+  def write_tarball(path, files)
+    File.open(path, "wb") do |file|
+      Zlib::GzipWriter.wrap(file) do |gzip|
+        Gem::Package::TarWriter.new(gzip) do |tar|
+          files.each { |name, content| tar.add_file_simple(name, 0o644, content.bytesize) { |io| io.write(content) } }
+        end
+      end
+    end
+  end
+
+  it "plans it with the archive's modification time, says where it came from and locks its checksum" do
+    run = relspec("plan", "specs/r.yml", "--write", chdir: @base)
+    expect(run.exit_code).to eq(0), run.stderr
+    sha256 = Digest::SHA256.file(@archive).hexdigest
+    expect(run.stdout).to include("external/tarball is imported from the archive #{@server.url}/tarball-1.2.tar.gz " \
+                                  "(sha256 #{sha256}, modified 2021-03-04T05:06:07Z)")
+    lock = YAML.safe_load_file(File.join(@base, "releases", "r", "lock.yml"))
+    expect(lock.dig("packages", "external/tarball")).to include("sha256" => sha256, "commit_time" => "2021-03-04T05:06:07Z")
+    expect(lock.dig("packages", "external/tarball", "version")).to end_with("20210304.050607")
+  end
+
+  it "emits the same .orig twice, holding the archive's tree dated by the archive" do
+    origs = %w[one two].map do |out|
+      run = relspec("compile", "specs/r.yml", "--out", out, chdir: @base)
+      expect(run.exit_code).to eq(0), run.stderr
+      Dir[File.join(@base, out, "**", "*.orig.tar.gz")].first
+    end
+    expect(File.binread(origs[0])).to eq(File.binread(origs[1]))
+    listing, = Open3.capture2("tar", "--utc", "-tvzf", origs[0])
+    expect(listing).to include("/CMakeLists.txt").and include("/README")
+    expect(listing.lines.grep(/README/).first).to include("2021-03-04 05:06")
+  end
+
+  it "refuses an archive the server does not have, and a package set patch leaving the package, without output" do
+    run = relspec("plan", "specs/missing.yml", chdir: @base)
+    expect(run.exit_code).to eq(1)
+    expect(run.stderr).to include("error[archive-import]: external/missing: #{@server.url}/missing-1.0.tar.gz answered 404")
+    run = relspec("compile", "specs/escape.yml", "--out", "escape", chdir: @base)
+    expect(run.exit_code).to eq(1)
+    expect(run.stderr).to include("error[package-set-patch]: package set patch autoproj/evil.patch names no file inside " \
+                                  "the package's folder")
+    expect(run.stderr).not_to match(/backtrace|\.rb:\d/)
+    expect(Dir[File.join(@base, "escape", "**", "*.dsc")]).to eq([])
+  end
+end

@@ -1,0 +1,83 @@
+# frozen_string_literal: true
+
+require_relative "../unit_helper"
+require "tmpdir"
+require "relspec/catalog/package"
+require "relspec/catalog/archive_import"
+require_relative "../../support/http_server"
+
+RSpec.describe Relspec::Catalog::ArchiveImport do
+  around do |example|
+    Dir.mktmpdir("relspec-archive-unit") do |dir|
+      @dir = dir
+      example.run
+    end
+  end
+
+  def package(url)
+    Relspec::Catalog::Package.new(name: "external/x", package_set: "set", build_type: "archive", commit_time: nil,
+                                  source_dir: "src/external/x", vcs: Relspec::Catalog::Vcs.new(type: "archive", url: url).freeze)
+  end
+
+  def import
+    described_class.new(cache: File.join(@dir, "cache"), timeout: 1)
+  end
+
+  def archive(content, time)
+    path = File.join(@dir, "x-1.0.tar.gz")
+    File.binwrite(path, content)
+    File.utime(time, time, path)
+    path
+  end
+
+  it "versions a local archive by its modification time and records its checksum, once in the cache" do
+    path = archive("bytes", Time.utc(2021, 1, 2, 3, 4, 5))
+    resolved = import.resolve(package("file://#{path}"))
+    expect(resolved.commit_time).to eq("2021-01-02T03:04:05Z")
+    expect(resolved.vcs.sha256).to eq(Digest::SHA256.hexdigest("bytes"))
+    expect(File.binread(import.path_of(resolved))).to eq("bytes")
+    # fetched once: a changed file is not seen until the cache entry goes
+    archive("other", Time.utc(2022, 1, 1))
+    expect(import.resolve(package("file://#{path}")).vcs.sha256).to eq(resolved.vcs.sha256)
+  end
+
+  it "refuses a cached archive that is not the one planned" do
+    path = archive("bytes", Time.utc(2021, 1, 2))
+    resolved = import.resolve(package("file://#{path}"))
+    File.binwrite(import.path_of(resolved), "tampered")
+    expect { import.path_of(resolved) }
+      .to raise_error(Relspec::InvalidInput) { |e| expect(e.diagnostics.first.message).to include("is not the one planned") }
+  end
+
+  it "refuses urls it cannot fetch, naming the package" do
+    ["ftp://example.org/x.tar.gz", "file://#{@dir}/missing.tar.gz", "::"].each do |url|
+      expect { import.resolve(package(url)) }.to raise_error(Relspec::InvalidInput) do |e|
+        expect(e.diagnostics.first.rule).to eq("archive-import")
+        expect(e.diagnostics.first.message).to start_with("external/x: ")
+      end
+    end
+  end
+
+  # a real server on 127.0.0.1 (a thread): a redirect, then no Last-Modified
+  it "follows a redirect and, without Last-Modified, takes the newest time of the archive's files" do
+    served = File.join(@dir, "served", "redir")
+    FileUtils.mkdir_p(served)
+    tarball = StringIO.new
+    Zlib::GzipWriter.wrap(tarball) do |gzip|
+      Gem::Package::TarWriter.new(gzip) { |tar| tar.add_file_simple("x-1.0/README", 0o644, 2) { |io| io.write("x\n") } }
+    end
+    File.binwrite(File.join(served, "x-1.0.tar.gz"), tarball.string)
+    # what a Last-Modified would say, were it sent
+    File.utime(Time.utc(2001), Time.utc(2001), File.join(served, "x-1.0.tar.gz"))
+    server = HttpServer.new(File.dirname(served))
+    server.fail(%r{\A/redir/}, :redirect)
+    server.fail(%r{\A/moved/}, :no_last_modified)
+    resolved = import.resolve(package("#{server.url}/redir/x-1.0.tar.gz"))
+    expect(server.requests).to eq(["/redir/x-1.0.tar.gz", "/moved/redir/x-1.0.tar.gz"])
+    expect(resolved.vcs.sha256).to eq(Digest::SHA256.hexdigest(tarball.string))
+    # TarWriter dates its files now: the time comes from them, not from the server
+    expect(Time.parse(resolved.commit_time)).to be_within(120).of(Time.now)
+  ensure
+    server&.stop
+  end
+end
