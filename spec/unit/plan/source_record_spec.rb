@@ -12,7 +12,7 @@ RSpec.describe Relspec::Plan::SourceRecord do
     expect(record["url"]).to eq("https://example.org/t.git")
     expect(record.to_h).to eq("url" => "https://example.org/t.git", "commit" => "1" * 40, "branch" => "master")
     expect(record.to_h.keys).to eq(%w[url commit branch])
-    expect(described_class.fields).to eq(%w[url commit commit_time version tag branch])
+    expect(described_class.fields).to eq(%w[url commit sha256 commit_time version tag branch])
     expect(described_class.from(record)).to equal(record)
   end
 
