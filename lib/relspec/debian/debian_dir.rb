@@ -7,6 +7,7 @@ require_relative "control_relations"
 require_relative "license_name"
 require_relative "build_input"
 require_relative "environment_file"
+require_relative "../osdeps/trust"
 require_relative "../yaml/writer"
 
 module Relspec
@@ -338,13 +339,18 @@ module Relspec
       end
 
       # The package set's own settings of the package (Catalog::Package#environment)
-      # for this prefix: [[type, name, values]]. Only names a shell can
-      # export and values without shell syntax get through: anything else
-      # would be code in env.sh.
+      # for this prefix: [[type, name, values]]. Only what relspec's package
+      # set accepts gets through (Osdeps::Trust: a documented variable, a
+      # path below the release's prefix or one plain word): a variable it
+      # refuses would make it refuse the whole release, a path into the
+      # maintainer's workspace ($AUTOPROJ_ROOT) means nothing on a user's
+      # machine, and shell syntax would be code in env.sh.
       def package_environment
         @in.package.environment.filter_map do |op|
           values = op.fetch("values").map { |value| value.gsub("$PREFIX", install_dir) }
-          next unless op.fetch("name").match?(/\A[A-Za-z_][A-Za-z0-9_]*\z/) && values.none? { |value| value.match?(/["$`\\\n]/) }
+          entry = { type: op.fetch("type").to_sym, values: values }
+          next if values.any? { |value| value.match?(/["$`\\\n]/) }
+          next if Osdeps::Trust.environment(op.fetch("name"), entry, prefix: File.dirname(install_dir))
 
           [op.fetch("type"), op.fetch("name"), values]
         end

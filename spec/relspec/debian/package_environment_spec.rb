@@ -30,8 +30,8 @@ RSpec.describe "the package set's environment in env.sh and env.yml" do
 
   # The variables after sourcing env.sh in sh, from an environment with +env+.
   def sourced(env_sh, env = {})
-    script = ". /dev/stdin <<'ENV'\n#{env_sh}ENV\nprintf '%s\\n' \"$TYPELIB_PLUGIN_PATH\" \"$EXTRA\" \"$CMAKE_PREFIX_PATH\""
-    output, status = Open3.capture2({ "TYPELIB_PLUGIN_PATH" => nil, "EXTRA" => nil }.merge(env), "sh", "-c", script)
+    script = ". /dev/stdin <<'ENV'\n#{env_sh}ENV\nprintf '%s\\n' \"$TYPELIB_PLUGIN_PATH\" \"$QT_PLUGIN_PATH\" \"$CMAKE_PREFIX_PATH\""
+    output, status = Open3.capture2({ "TYPELIB_PLUGIN_PATH" => nil, "QT_PLUGIN_PATH" => nil }.merge(env), "sh", "-c", script)
     raise output unless status.success?
 
     output.lines.map(&:chomp)
@@ -39,7 +39,7 @@ RSpec.describe "the package set's environment in env.sh and env.yml" do
 
   environment = [
     { "type" => "set", "name" => "TYPELIB_PLUGIN_PATH", "values" => ["$PREFIX/lib/typelib"] },
-    { "type" => "add_path", "name" => "EXTRA", "values" => ["$PREFIX/share/a", "$PREFIX/share/b"] },
+    { "type" => "add_path", "name" => "QT_PLUGIN_PATH", "values" => ["$PREFIX/share/a", "$PREFIX/share/b"] },
     { "type" => "add_path", "name" => "CMAKE_PREFIX_PATH", "values" => ["$PREFIX/cmake"] }
   ]
 
@@ -48,7 +48,7 @@ RSpec.describe "the package set's environment in env.sh and env.yml" do
     expect(sourced(env_sh)).to eq(["#{prefix}/lib/typelib", "#{prefix}/share/a:#{prefix}/share/b",
                                    "#{prefix}/cmake:#{prefix}"])
     # set replaces, add_path prepends to what the shell had
-    expect(sourced(env_sh, "TYPELIB_PLUGIN_PATH" => "/old", "EXTRA" => "/old"))
+    expect(sourced(env_sh, "TYPELIB_PLUGIN_PATH" => "/old", "QT_PLUGIN_PATH" => "/old"))
       .to eq(["#{prefix}/lib/typelib", "#{prefix}/share/a:#{prefix}/share/b:/old", "#{prefix}/cmake:#{prefix}"])
   end
 
@@ -56,7 +56,7 @@ RSpec.describe "the package set's environment in env.sh and env.yml" do
     data = YAML.safe_load(render(environment)["env.yml"], permitted_classes: [Symbol])
     expect(data["TYPELIB_PLUGIN_PATH"]).to eq(type: :set, values: ["#{prefix}/lib/typelib"], priority: 0)
     # the value searched first is written last (autoproj prepends one after the other)
-    expect(data["EXTRA"]).to eq(type: :add_path, values: ["#{prefix}/share/b", "#{prefix}/share/a"], priority: 0)
+    expect(data["QT_PLUGIN_PATH"]).to eq(type: :add_path, values: ["#{prefix}/share/b", "#{prefix}/share/a"], priority: 0)
     expect(data["CMAKE_PREFIX_PATH"][:values]).to eq([prefix, "#{prefix}/cmake"])
   end
 
@@ -67,6 +67,20 @@ RSpec.describe "the package set's environment in env.sh and env.yml" do
     expect(files["env.sh"]).not_to include("rm -rf")
     expect(files["env.sh"]).not_to include("$(id)")
     expect(files["env.yml"]).not_to include("rm -rf")
+  end
+
+  # What relspec's package set would refuse (Osdeps::Trust) never reaches
+  # env.yml: it would refuse the whole release for it.
+  it "writes only what the package set accepts: documented variables, paths below the prefix, plain words" do
+    settings = [{ "type" => "set", "name" => "LD_PRELOAD", "values" => ["$PREFIX/lib/evil.so"] },
+                { "type" => "add_path", "name" => "UNKNOWN_PATH", "values" => ["$PREFIX/x"] },
+                { "type" => "set", "name" => "Syskit_DIR", "values" => ["/home/maintainer/ws/tools/syskit/cmake"] },
+                { "type" => "set", "name" => "TYPELIB_CXX_LOADER", "values" => ["castxml"] },
+                { "type" => "set", "name" => "ROCK_PREFIX", "values" => ["$PREFIX/share/rock"] }]
+    data = YAML.safe_load(render(settings)["env.yml"], permitted_classes: [Symbol])
+    expect(data.keys).not_to include("LD_PRELOAD", "UNKNOWN_PATH", "Syskit_DIR")
+    expect(data["TYPELIB_CXX_LOADER"]).to eq(type: :set, values: ["castxml"], priority: 0)
+    expect(data["ROCK_PREFIX"]).to eq(type: :set, values: ["#{prefix}/share/rock"], priority: 0)
   end
 
   it "writes nothing more for a package without settings" do
