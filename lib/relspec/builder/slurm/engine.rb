@@ -148,7 +148,9 @@ module Relspec
                                     result: result_path(entry.source), output_dir: request.output_dir,
                                     prefix: "results/#{entry.source}")
           AtomicFile.write(path, script)
-          deps = [@prepare_id, *entry.build_depends.filter_map { |dep| ids[dep] }]
+          # afterok on every build of the run the job's backend installs
+          # (the closure), not only the direct build-dependencies
+          deps = [@prepare_id, *ancestors.filter_map { |source| ids[source] }]
           submit(path, entry.source, request.log, deps)
         end
 
