@@ -33,7 +33,8 @@ module Relspec
           thead { display: none; } tr { display: block; padding: 6px 0; border-bottom: 1px solid #ccc; }
           td { display: block; border: none; padding: 1px 0; } td.num { text-align: left; }
           td[data-label]::before { content: attr(data-label) ": "; color: #606060; }
-          td:first-child { font-weight: bold; } td:empty { display: none; } }
+          td:first-child { font-weight: bold; } td:empty { display: none; }
+          .matrix td div { display: inline; margin-right: 8px; } }
         @media print { body { max-width: none; font-size: 11px; } .scroll { overflow: visible; } a { color: inherit; }
           h2 { break-after: avoid; } tr, .error { break-inside: avoid; } }
       CSS
