@@ -13,6 +13,7 @@ require_relative "builder/build_results"
 require_relative "report/reading"
 require_relative "report/html_renderer"
 require_relative "report/json_renderer"
+require_relative "report/abi_summary"
 
 module Relspec
   # `relspec report` (and `relspec publish`, next to the repository): a
@@ -48,8 +49,19 @@ module Relspec
       ancestor = effective.parents.first
       tree = OutputTree.new(out, release)
       inputs = Target.all(effective).map { |target| input(tree, target, release) }
-      Reading.new(lock: lock, inputs: inputs, ancestor: ancestor,
+      Reading.new(lock: lock, inputs: inputs, ancestor: ancestor, abi: abi(path, out),
                   ancestor_lock: ancestor && Plan::LockParser.read(project.lock_path(ancestor), release: ancestor)).page
+    end
+
+    # target name => AbiSummary of `relspec abi`'s verdicts (Abi.run: the
+    # last build's dumps against the nearest ancestor's published ones).
+    # A release whose verdicts cannot be computed still gets its page, which
+    # says why (its Error's message).
+    def abi(path, out)
+      require_relative "abi" # abidiff and the ancestors' indexes: only for a release being reported
+      Abi.run(path, out: out).targets.to_h { |one| [one.target.to_s, AbiSummary.of(one.entries)] }.compact
+    rescue Error => e
+      Target.all(ReleaseSpec.resolve(path).effective).to_h { |target| [target.to_s, AbiSummary.failed(e.message)] }
     end
 
     def input(tree, target, release)

@@ -3,6 +3,7 @@
 require_relative "unit_helper"
 require "tmpdir"
 require "fileutils"
+require "digest"
 require "relspec/report"
 
 RSpec.describe Relspec::Report do
@@ -26,5 +27,54 @@ RSpec.describe Relspec::Report do
   it "refuses a format it does not know before reading anything" do
     expect { described_class.run("nowhere.yml", out: "build", format: "pdf") }
       .to raise_error(Relspec::InvalidOption, 'unknown format "pdf" (known: html, json)')
+  end
+
+  # Report.abi over a project folder: a child whose last build recorded a
+  # dump, a parent whose repository publishes an ABI index (no abidiff runs
+  # in either case).
+  context "with the ABI verdicts of `relspec abi`" do
+    around do |example|
+      Dir.mktmpdir("relspec-unit-report-abi") do |dir|
+        @dir = dir
+        example.run
+      end
+    end
+
+    before do
+      FileUtils.mkdir_p(File.join(@dir, "specs"))
+      head = "workspace: ../ws\ntargets: { bookworm: [amd64] }\nmaintainer: Demo <demo@example.org>\n"
+      File.write(File.join(@dir, "specs", "base.yml"), "release: base\n#{head}repository: { path: ../repo }\n")
+      File.write(File.join(@dir, "specs", "child.yml"), "release: child\nparent: base\n#{head}")
+      target = File.join(@dir, "out", "child", "bookworm-amd64")
+      FileUtils.mkdir_p(File.join(target, "results", "rock-a"))
+      File.write(File.join(target, "results", "rock-a", "liba.so.abi.xml.gz"), "dump")
+      File.write(File.join(target, "build-results.yml"), <<~YAML)
+        relspec_build_results: 1
+        release: child
+        target: bookworm/amd64
+        backend: host
+        packages:
+          rock-a:
+            package: a
+            version: 1.0-1~bookworm
+            status: built
+            files:
+              - { name: results/rock-a/liba.so.abi.xml.gz, sha256: #{Digest::SHA256.hexdigest('dump')}, size: 4 }
+      YAML
+    end
+
+    let(:abi) { described_class.abi(File.join(@dir, "specs", "child.yml"), File.join(@dir, "out")) }
+
+    it "gives no summary when no ancestor published a dump to compare with" do
+      expect(abi).to eq({})
+    end
+
+    it "gives the reason instead of verdicts when an ancestor's index is broken, and the page still gets made" do
+      FileUtils.mkdir_p(File.join(@dir, "repo", "abi", "bookworm-amd64"))
+      File.write(File.join(@dir, "repo", "abi", "bookworm-amd64", "index.yml"), "relspec_abi_dumps: 9\nentries: []\n")
+      expect(abi.keys).to eq(["bookworm/amd64"])
+      expect(abi["bookworm/amd64"].error).to include("repo/abi/bookworm-amd64/index.yml:1:20: error[abi-index]: cannot read the ABI index: unknown format 9")
+      expect(abi["bookworm/amd64"].counts).to eq({})
+    end
   end
 end

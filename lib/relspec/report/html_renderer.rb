@@ -23,6 +23,7 @@ module Relspec
         .badge { display: inline-block; padding: 0 6px; border-radius: 4px; font-size: 13px; white-space: nowrap; }
         .built { background: #d9f2dc; } .failed { background: #f9d0cc; font-weight: bold; } .skipped { background: #fde8bf; }
         .not-built-yet { background: #e6e6e6; } .published { background: #d7e6f8; }
+        .changed { background: #fde8bf; } .incompatible { background: #f9d0cc; font-weight: bold; }
         .totals span { margin-right: 10px; white-space: nowrap; } .muted { color: #606060; }
         .error { background: #fff3f1; border-left: 4px solid #c0392b; padding: 6px 8px; margin: 6px 0 12px; }
         ol, ul { padding-left: 1.3rem; } li { margin: 2px 0; } a { color: #0b57a4; overflow-wrap: anywhere; }
@@ -32,13 +33,14 @@ module Relspec
           thead { display: none; } tr { display: block; padding: 6px 0; border-bottom: 1px solid #ccc; }
           td { display: block; border: none; padding: 1px 0; } td.num { text-align: left; }
           td[data-label]::before { content: attr(data-label) ": "; color: #606060; }
-          td:first-child { font-weight: bold; } td:empty { display: none; } }
+          td:first-child { font-weight: bold; } td:empty { display: none; }
+          .matrix td div { display: inline; margin-right: 8px; } }
         @media print { body { max-width: none; font-size: 11px; } .scroll { overflow: visible; } a { color: inherit; }
           h2 { break-after: avoid; } tr, .error { break-inside: avoid; } }
       CSS
 
       def render(page)
-        body = [heading(page), *page.targets.map { |view| target(view, page) }].join("\n")
+        body = [heading(page), matrix(page), *page.targets.map { |view| target(view, page) }].compact.join("\n")
         <<~HTML
           <!DOCTYPE html>
           <html lang="en">
@@ -87,7 +89,7 @@ module Relspec
         [
           "<h2 id=\"#{anchor(view.target)}\">#{h(view.target)}</h2>",
           "<p class=\"totals\">#{totals(view)}#{build_time(view)}</p>",
-          failures(view), blocked(view), matrix(view), critical_path(view), causes(view), changes(view, page)
+          failures(view), blocked(view), critical_path(view), abi(view), causes(view), changes(view, page)
         ].compact.join("\n")
       end
 
@@ -128,14 +130,30 @@ module Relspec
         "<h3>Blocked</h3>\n<ol>\n#{items.join("\n")}\n</ol>"
       end
 
-      def matrix(view)
-        rows = view.cells.map do |cell|
-          "<tr><td>#{h(cell.package)}</td><td>#{decision(cell)}</td><td data-label=\"version\"><code>#{h(cell.version)}" \
-            "</code></td><td>#{status(view, cell)}</td><td class=\"num\" data-label=\"build time\">" \
-            "#{seconds(cell.duration) if cell.duration}</td></tr>"
+      # One table for the whole release: a row per package, a column per
+      # target (decision, version, last build and its time in each cell); on
+      # a narrow screen each row becomes a block and each cell names its
+      # target.
+      def matrix(page)
+        return nil if page.targets.empty?
+
+        rows = page.packages.map do |package|
+          cells = page.targets.map do |view|
+            found = view.cell(package)
+            found ? "<td data-label=\"#{h(view.target)}\">#{matrix_cell(view, found)}</td>" : "<td></td>"
+          end
+          "<tr><td>#{h(package)}</td>#{cells.join}</tr>"
         end
-        "<h3>Packages</h3>\n<div class=\"scroll\"><table>\n<thead><tr><th>Package</th><th>Decision</th><th>Version</th>" \
-          "<th>Build</th><th>Time</th></tr></thead>\n<tbody>\n#{rows.join("\n")}\n</tbody></table></div>"
+        heads = page.targets.map { |view| "<th><a href=\"##{anchor(view.target)}\">#{h(view.target)}</a></th>" }
+        "<h2 id=\"packages\">Packages</h2>\n<div class=\"scroll\"><table class=\"matrix\">\n<thead><tr><th>Package</th>" \
+          "#{heads.join}</tr></thead>\n<tbody>\n#{rows.join("\n")}\n</tbody></table></div>"
+      end
+
+      def matrix_cell(view, cell)
+        build = [status(view, cell), cell.duration && "<span class=\"muted\">#{seconds(cell.duration)}</span>"].compact
+        build = build.reject(&:empty?)
+        ["<div>#{decision(cell)}</div>", "<div><code>#{h(cell.version)}</code></div>",
+         ("<div>#{build.join(' ')}</div>" unless build.empty?)].compact.join
       end
 
       DECISION_WORDS = { "build" => "built here", "published" => "published", "system" => "from the distribution",
@@ -175,6 +193,23 @@ module Relspec
         chain = view.critical_path.map { |step| "#{h(package_of(view, step.source))} (#{seconds(step.duration)})" }
         "<h3>Critical path of the last build</h3>\n<p>#{chain.join(' → ')}: #{seconds(view.critical_seconds)} " \
           "<span class=\"muted\">(the chain of build-dependencies no number of jobs makes shorter)</span></p>"
+      end
+
+      # `relspec abi`'s verdicts in short: a count per verdict and the
+      # libraries to review (docs/abi.md says what each verdict means).
+      def abi(view)
+        return nil unless view.abi
+
+        title = "<h3>ABI against the ancestors' published dumps</h3>"
+        return "#{title}\n<p class=\"muted\">not computed: #{h(view.abi.error)}</p>" if view.abi.error
+
+        counts = view.abi.counts.reject { |_, count| count.zero? }.map { |name, count| "<span>#{count} #{h(name)}</span>" }
+        items = view.abi.listed.map do |one|
+          "<li><span class=\"badge #{h(one.verdict)}\">#{h(one.verdict)}</span> <code>#{h(one.library)}</code> " \
+            "(#{h(one.package)}) <span class=\"muted\">against #{h(one.against)}</span></li>"
+        end
+        list = items.empty? ? "" : "\n<ul>\n#{items.join("\n")}\n</ul>"
+        "#{title}\n<p class=\"totals\">#{counts.join(' ')}</p>#{list}"
       end
 
       def causes(view)

@@ -45,24 +45,36 @@ module Relspec
 
     # One target: its cells by package, totals (name => count, in a fixed
     # order), the blockers (most blocked first), the critical path of the
-    # last build, and the changes against the ancestor (nil: no ancestor
-    # lock to compare with).
+    # last build, the changes against the ancestor (nil: no ancestor
+    # lock to compare with) and the ABI verdicts' AbiSummary (nil: no dumps
+    # compared).
     TargetView = Struct.new(:target, :backend, :cells, :totals, :build_seconds, :blockers, :critical_path, :changes,
-                            keyword_init: true) do
+                            :abi, keyword_init: true) do
       def critical_seconds
         critical_path.sum(&:duration)
+      end
+
+      # The Cell of +package+, nil when the lock has none on this target.
+      def cell(package)
+        cells.find { |one| one.package == package }
       end
 
       def to_h
         { "target" => target, "backend" => backend, "totals" => totals, "build_seconds" => build_seconds,
           "packages" => cells.to_h { |cell| [cell.package, cell.to_h] }, "blocked" => blockers.map(&:to_h),
-          "critical_path" => critical_path.map(&:to_h), "changes" => changes&.map(&:to_h) }.compact
+          "critical_path" => critical_path.map(&:to_h), "changes" => changes&.map(&:to_h),
+          "abi" => abi&.to_h }.compact
       end
     end
 
     # The whole page of one release: +ancestor+ the release the changes are
     # against (nil: none).
     Page = Struct.new(:release, :ancestor, :targets, keyword_init: true) do
+      # The packages of every target, sorted: the rows of the matrix.
+      def packages
+        targets.flat_map { |view| view.cells.map(&:package) }.uniq.sort
+      end
+
       def to_h
         { "relspec_report" => 1, "release" => release, "ancestor" => ancestor, "targets" => targets.map(&:to_h) }.compact
       end

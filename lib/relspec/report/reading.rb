@@ -21,9 +21,11 @@ module Relspec
       Input = Struct.new(:target, :dir, :plan, :results, keyword_init: true)
 
       # +lock+, +ancestor_lock+: Plan::Lock (the latter nil when there is
-      # none); +ancestor+: its release; +inputs+: Input per target.
-      def initialize(lock:, inputs:, ancestor: nil, ancestor_lock: nil, counter: Diff::CommitCounter.new)
+      # none); +ancestor+: its release; +inputs+: Input per target; +abi+:
+      # target name => AbiSummary (a target without one shows no verdicts).
+      def initialize(lock:, inputs:, ancestor: nil, ancestor_lock: nil, abi: {}, counter: Diff::CommitCounter.new)
         @lock = lock
+        @abi = abi
         @inputs = inputs
         @ancestor = ancestor_lock && ancestor
         @diff = ancestor_lock && Diff::ReleaseDiff.compare(snapshot(ancestor_lock), snapshot(lock), counter: counter)
@@ -53,7 +55,8 @@ module Relspec
         durations = records.values.select(&:duration).to_h { |record| [record.source, record.duration] }
         TargetView.new(target: name, backend: input.results&.backend, cells: cells.freeze, totals: totals(cells),
                        build_seconds: durations.values.sum, blockers: blockers(cells),
-                       critical_path: CriticalPath.of(entries, durations).freeze, changes: changes(name)).freeze
+                       critical_path: CriticalPath.of(entries, durations).freeze, changes: changes(name),
+                       abi: @abi[name]).freeze
       end
 
       def cell(input, package, entry, planned, record, blocked, logs)

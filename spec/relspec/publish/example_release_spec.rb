@@ -151,7 +151,7 @@ RSpec.describe "the example releases, built and published on bookworm", order: :
 
   # Every row of the page's package table: package => its cells' text.
   def rows(dom)
-    dom[%r{<h3>Packages</h3>.*?</table>}m].scan(%r{<tr><td>([^<]+)</td>(.*?)</tr>}m).to_h { |package, cells| [package, cells.gsub(/<[^>]+>/, " ").squeeze(" ").strip] }
+    dom[%r{<h2 id="packages">Packages</h2>.*?</table>}m].scan(%r{<tr><td>([^<]+)</td>(.*?)</tr>}m).to_h { |package, cells| [package, cells.gsub(/<[^>]+>/, " ").squeeze(" ").strip] }
   end
 
   it "writes a status page a browser shows offline: the failure, its log, what it blocks, what is inherited" do

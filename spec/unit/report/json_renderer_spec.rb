@@ -4,6 +4,7 @@ require_relative "../unit_helper"
 require "json"
 require "relspec/report/page"
 require "relspec/report/json_renderer"
+require "relspec/report/abi_summary"
 
 RSpec.describe Relspec::Report::JsonRenderer do
   it "writes the page's data as a versioned document, leaving out what is not known" do
@@ -19,5 +20,19 @@ RSpec.describe Relspec::Report::JsonRenderer do
                                                         "from" => "base", "version" => "1.0-1" } },
                       "blocked" => [], "critical_path" => [] }]
     )
+  end
+
+  it "adds a target's ABI summary when it has one" do
+    abi = Relspec::Report::AbiSummary.new(counts: { "changed" => 1 }, listed: [
+      Relspec::Report::AbiLibrary.new(package: "a", library: "liba.so", verdict: "changed",
+                                      against: "base")
+    ])
+    view = Relspec::Report::TargetView.new(target: "bookworm/amd64", cells: [], totals: {}, build_seconds: 0, blockers: [],
+                                           critical_path: [], abi: abi)
+    data = JSON.parse(described_class.render(Relspec::Report::Page.new(release: "child", targets: [view])))
+    expect(data["targets"].first["abi"]).to eq("counts" => { "changed" => 1 }, "listed" => [
+      { "package" => "a", "library" => "liba.so", "verdict" => "changed",
+        "against" => "base" }
+    ])
   end
 end
