@@ -91,7 +91,7 @@ module Relspec
                             "#{tree.release_dir} (run relspec build first)"
       end
 
-      uploads = results.to_h { |one, read| [one, read ? read.built.map { |entry| Upload.of(entry, File.dirname(read.path), read.path) } : []] }
+      uploads = uploads(results, debug_symbols: effective.repository.debug_symbols)
       sign_with = effective.repository.sign_with
       SigningKey.check(sign_with) if sign_with
       config = RepositoryConfig.new(release: effective.release, targets: all, sign_with: sign_with)
@@ -103,6 +103,14 @@ module Relspec
         written, missing = write_osdeps(locked, effective, repository)
         Result.new(release: effective.release, repository: repository, targets: targets, osdeps_written: written,
                    osdeps_missing: missing, stale_lock: stale_lock, recovered: recovered)
+      end
+    end
+
+    # Per target, the Upload of each built package (none when unbuilt),
+    # checked against its record; +debug_symbols+: with the -dbgsym .debs.
+    def self.uploads(results, debug_symbols:)
+      results.to_h do |target, read|
+        [target, read ? read.built.map { |entry| Upload.of(entry, File.dirname(read.path), read.path, debug_symbols: debug_symbols) } : []]
       end
     end
 
@@ -200,7 +208,7 @@ module Relspec
       written = Osdeps::Files.write_release(listing.targets, effective, File.join(repository, "osdeps"))
       [written.changed_count, listing.missing]
     end
-    private_class_method :transaction, :repository_path, :read_results, :include_targets, :write_config, :write_osdeps,
+    private_class_method :uploads, :transaction, :repository_path, :read_results, :include_targets, :write_config, :write_osdeps,
                          :write_abi_dumps
   end
 end

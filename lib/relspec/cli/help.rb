@@ -37,8 +37,9 @@ module Relspec
 
       PUBLISH = <<~TEXT
         Reads <out>/<release>/<codename>-<arch>/build-results.yml of each target and
-        includes every built package (its .dsc and .debs) into the repository at the
-        spec's repository.path, whose conf/distributions and conf/options it writes
+        includes every built package (its .dsc and .debs; the -dbgsym .debs only with
+        repository.debug_symbols: true) into the repository at the spec's
+        repository.path, whose conf/distributions and conf/options it writes
         from the spec's targets (signed with repository.sign_with when set). Failed
         and skipped packages are never published; a file whose name the repository
         already holds with other bytes stops the publication before anything is

@@ -4,13 +4,15 @@ require "digest"
 require_relative "../apt/deb822"
 require_relative "../debian/naming"
 require_relative "../error"
+require_relative "debug_symbols"
 
 module Relspec
   module Publish
     # What one built source package puts into the repository: its source
     # package (where compile wrote it) and the .debs the build produced, each
     # checked against what was recorded, and each with the name it gets in
-    # reprepro's pool.
+    # reprepro's pool. Debug-symbol packages are left out unless the spec
+    # asks for them (DebugSymbols); every recorded file is still checked.
     class Upload
       # +local+: the file here; +pool+: its path below the repository.
       Item = Struct.new(:local, :pool, keyword_init: true)
@@ -18,19 +20,21 @@ module Relspec
       attr_reader :source, :version, :dsc, :debs
 
       # +entry+: a Builder::BuildResults::Record (built); +target_dir+: the target's
-      # folder of <out>, where compile and build wrote.
-      def self.of(entry, target_dir, results_path)
-        new(entry, target_dir, results_path).tap(&:verify)
+      # folder of <out>, where compile and build wrote; +debug_symbols+:
+      # the -dbgsym .debs are published too.
+      def self.of(entry, target_dir, results_path, debug_symbols: false)
+        new(entry, target_dir, results_path, debug_symbols: debug_symbols).tap(&:verify)
       end
 
-      def initialize(entry, target_dir, results_path)
+      def initialize(entry, target_dir, results_path, debug_symbols: false)
         @entry = entry
         @source = entry.source
         @version = entry.version
         @target_dir = target_dir
         @results_path = results_path
         @dsc = File.join(target_dir, @source, Debian::Naming.dsc(@source, @version))
-        @debs = entry.files.map { |file| File.join(target_dir, file.name) }.select { |path| path.end_with?(".deb") }.sort
+        @built = entry.files.map { |file| File.join(target_dir, file.name) }.select { |path| path.end_with?(".deb") }.sort
+        @debs = DebugSymbols.select(@built, included: debug_symbols)
       end
 
       # Every recorded file present with its recorded bytes, at least one
@@ -43,7 +47,8 @@ module Relspec
           actual = Digest::SHA256.file(path).hexdigest
           fail!("#{path} has changed since it was built (sha256 #{actual}, recorded #{file.sha256})") unless actual == file.sha256
         end
-        fail!("the build produced no .deb") if @debs.empty?
+        fail!("the build produced no .deb") if @built.empty?
+        fail!("the build produced only debug-symbol packages (#{@built.map { |path| File.basename(path) }.join(', ')})") if @debs.empty?
         source_files.each do |name, sha256|
           path = File.join(File.dirname(@dsc), name)
           fail!("#{path}, listed in #{@dsc}, is missing") unless File.file?(path)

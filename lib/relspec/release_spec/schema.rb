@@ -65,10 +65,12 @@ module Relspec
       end
 
       # The release's own repository: also how `relspec publish` signs it
-      # (a gpg key id or fingerprint for reprepro's SignWith).
+      # (a gpg key id or fingerprint for reprepro's SignWith) and whether it
+      # carries the -dbgsym packages the build made (default: no).
       OWN_REPOSITORY = Dry::Schema.JSON(parent: REPOSITORY) do
         config.validate_keys = true
         optional(:sign_with).filled(:string)
+        optional(:debug_symbols).value(:bool)
       end
 
       # An external release is a repository plus what it tells its descendants.

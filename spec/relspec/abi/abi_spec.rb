@@ -32,7 +32,7 @@ RSpec.describe "relspec abi on a real library", :tmpdir do
       select: [base/logging]
       blacklist:
         - { match: base/logging, reason: rebuilt from the parent's source }
-      repository: { path: ../repos/same, trusted: true }
+      repository: { path: ../repos/same, trusted: true, debug_symbols: true }
     YAML
     write_spec("changed", <<~YAML, workspace)
       parent: parent
@@ -88,6 +88,26 @@ RSpec.describe "relspec abi on a real library", :tmpdir do
                                     "version" => index["dumps"].first["version"], "library" => "libbase-logging.so",
                                     "file" => "rock-parent-base-logging/libbase-logging.so.abi.xml.gz",
                                     "sha256" => Digest::SHA256.file(dump("parent")).hexdigest }])
+  end
+
+  it "publishes the -dbgsym .deb the dumps were made from only when the spec asks for it" do
+    results = YAML.safe_load_file(File.join(@root, "out", "parent", "bookworm-amd64", "build-results.yml"))
+    recorded = results["packages"]["rock-parent-base-logging"]["files"].map { |file| File.basename(file["name"]) }
+    expect(recorded.grep(/\Arock-parent-base-logging-dbgsym_.*_amd64\.deb\z/).size).to eq(1) # kept by the build
+    # parent, published in before(:all), does not ask
+    parent = File.join(@root, "repos", "parent")
+    expect(Dir.glob("pool/**/*.deb", base: parent).grep(/dbgsym/)).to eq([])
+    expect(File.read(File.join(parent, "dists", "bookworm", "main", "binary-amd64", "Packages"))).not_to include("dbgsym")
+    # same says debug_symbols: true
+    run!("publish", "specs/same.yml", "--out", "out")
+    same = File.join(@root, "repos", "same")
+    expect(Dir.glob("pool/**/*.deb", base: same).grep(/dbgsym/))
+      .to match([a_string_matching(%r{\Apool/main/r/rock-same-base-logging/rock-same-base-logging-dbgsym_.*_amd64\.deb\z})])
+    expect(File.read(File.join(same, "dists", "bookworm", "main", "binary-amd64", "Packages")))
+      .to include("Package: rock-same-base-logging-dbgsym\n")
+    osdeps = File.read(File.join(same, "osdeps", "same-amd64.yml"))
+    expect(osdeps).to include("rock-same-base-logging")
+    expect(osdeps).not_to include("dbgsym")
   end
 
   it "names a library rebuilt from the same source unchanged" do

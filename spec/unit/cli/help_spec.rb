@@ -14,4 +14,8 @@ RSpec.describe Relspec::CLI::Help do
     expect(used.size).to eq(used.uniq.size)
     expect(used.size).to eq(described_class.constants.size)
   end
+
+  it "tells in publish's help that the debug-symbol packages are published only when asked" do
+    expect(described_class::PUBLISH.tr("\n", " ")).to include("the -dbgsym .debs only with repository.debug_symbols: true")
+  end
 end

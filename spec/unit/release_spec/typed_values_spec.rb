@@ -19,14 +19,16 @@ RSpec.describe "ReleaseSpec typed values" do
   describe Relspec::ReleaseSpec::RepositoryEntry do
     it "resolves path and keyring against the folder of the spec that wrote them" do
       entry = effective({ "repository" => { "path" => "../repo", "keyring" => "k.gpg", "trusted" => true,
-                                            "sign_with" => "ABCD" } }).repository
-      expect(entry).to have_attributes(path: "/repo", keyring: "/specs/k.gpg", trusted: true, sign_with: "ABCD", url: nil)
+                                            "sign_with" => "ABCD", "debug_symbols" => true } }).repository
+      expect(entry).to have_attributes(path: "/repo", keyring: "/specs/k.gpg", trusted: true, sign_with: "ABCD", url: nil,
+                                       debug_symbols: true)
       expect(entry).to be_frozen
     end
 
-    it "is nil without a repository and treats a missing trusted as false" do
+    it "is nil without a repository and treats a missing trusted or debug_symbols as false" do
       expect(effective({}).repository).to be_nil
-      expect(Relspec::ReleaseSpec::RepositoryEntry.from({ "url" => "http://127.0.0.1/r" }, base: "/").trusted).to be(false)
+      expect(Relspec::ReleaseSpec::RepositoryEntry.from({ "url" => "http://127.0.0.1/r" }, base: "/"))
+        .to have_attributes(trusted: false, debug_symbols: false)
       expect(Relspec::ReleaseSpec::RepositoryEntry.from("nonsense", base: "/")).to be_nil
     end
 

@@ -4,8 +4,9 @@ module Relspec
   module ReleaseSpec
     # A `repository:` (or `external:`, or distribution archive) entry with its
     # relative paths resolved against the folder of the spec that wrote it.
-    # +path+ and +keyring+ are absolute (or nil), +url+ as written.
-    RepositoryEntry = Struct.new(:path, :url, :keyring, :trusted, :sign_with, keyword_init: true) do
+    # +path+ and +keyring+ are absolute (or nil), +url+ as written;
+    # +debug_symbols+ (own repository only): publish the -dbgsym packages.
+    RepositoryEntry = Struct.new(:path, :url, :keyring, :trusted, :sign_with, :debug_symbols, keyword_init: true) do
       # +entry+: the mapping as written; +base+: the declaring spec's folder.
       # nil when +entry+ is not a mapping.
       def self.from(entry, base:)
@@ -13,7 +14,8 @@ module Relspec
 
         new(path: entry["path"] && File.expand_path(entry["path"], base), url: entry["url"],
             keyring: entry["keyring"] && File.expand_path(entry["keyring"], base),
-            trusted: entry["trusted"] == true, sign_with: entry["sign_with"])
+            trusted: entry["trusted"] == true, sign_with: entry["sign_with"],
+            debug_symbols: entry["debug_symbols"] == true)
       end
 
       def initialize(**)
