@@ -71,7 +71,7 @@ class PreloadedRelspec
 
   # stdout, stderr, Status and peak memory (KiB) of one run.
   def run(args, chdir:, env:)
-    UNIXSocket.open(@socket) do |connection|
+    connect do |connection|
       readers = [IO.pipe, IO.pipe].map do |reader, writer|
         connection.send_io(writer)
         writer.close
@@ -99,6 +99,21 @@ class PreloadedRelspec
   end
 
   private
+
+  # UNIXServer.new binds (the file appears) before it listens: a run that
+  # connects in between is refused. Seen under CI's load; asked again for
+  # a bounded time.
+  def connect(&)
+    deadline = Process.clock_gettime(Process::CLOCK_MONOTONIC) + 10
+    begin
+      UNIXSocket.open(@socket, &)
+    rescue Errno::ECONNREFUSED
+      raise if Process.clock_gettime(Process::CLOCK_MONOTONIC) > deadline
+
+      sleep(0.05)
+      retry
+    end
+  end
 
   def wait_for_socket
     deadline = Process.clock_gettime(Process::CLOCK_MONOTONIC) + START_DEADLINE
