@@ -31,10 +31,11 @@ module Relspec
       # +release_catalog+: Catalog::ReleaseCatalog; +effective+: the
       # release's EffectiveSpec; +spec_file+: its SpecFile (for locations);
       # +ancestors+: Plan::Ancestor in search order; +inventory+: Inventory;
-      # +distribution+: DistributionPackages (the targets' own ruby-* packages).
+      # +distribution+: DistributionPackages (the targets' own ruby-* packages);
+      # +uncommitted+: name => Catalog::UncommittedChanges::Change (noted).
       # Builds come out unversioned: Settlement gives them their versions.
       def initialize(release_catalog:, effective:, spec_file:, ancestors:, inventory:,
-                     distribution: DistributionPackages.new({}, []))
+                     distribution: DistributionPackages.new({}, []), uncommitted: {})
         @catalog = release_catalog.catalog
         @selections = release_catalog.selections
         @effective = effective
@@ -45,6 +46,7 @@ module Relspec
         @gem_requirements = release_catalog.gem_resolution.requirements
         @warnings = []
         @notes = release_catalog.gem_resolution.notes.dup
+        @uncommitted = uncommitted
       end
 
       def plan
@@ -53,6 +55,8 @@ module Relspec
         unavailable = targets.to_h { |target| [target, unavailable_on(target)] }
         decisions = targets.to_h { |target| [target, plan_target(target, blacklist, unavailable[target])] }
         note_gems_without_archive
+        # what a checkout holds beyond its commit is not in the release
+        @uncommitted.sort.each { |name, change| @notes << change.note(name) }
         ReleasePlan.new(release: @effective.release, targets: decisions, packages: package_records(decisions, unavailable),
                         release_digests: @inventory.release_digests, warnings: merged_warnings, notes: @notes.uniq.sort,
                         unavailable: unavailable)

@@ -6,6 +6,7 @@ require "relspec/plan/ancestor"
 require "relspec/plan/inventory"
 require "relspec/plan/target"
 require "relspec/catalog/release_catalog"
+require "relspec/catalog/uncommitted_changes"
 require "relspec/release_spec/effective_spec"
 require "relspec/release_spec/spec_file"
 
@@ -38,6 +39,7 @@ RSpec.describe Relspec::Plan::Planner do
 
   # +held+: ancestor name => {package => upstream version}; an ancestor
   # without an entry does not have the target at all.
+  # +@uncommitted+: what a test gives as the checkouts' uncommitted changes
   def plan(held, spec = {})
     indices = held.to_h do |name, packages|
       entries = packages.to_h do |package, version|
@@ -53,7 +55,7 @@ RSpec.describe Relspec::Plan::Planner do
     )
     described_class.new(release_catalog: release_catalog, effective: effective, spec_file: spec_file,
                         ancestors: %w[near far].map { |name| ancestor(name) },
-                        inventory: Relspec::Plan::Inventory.new(indices, {})).plan
+                        inventory: Relspec::Plan::Inventory.new(indices, {}), uncommitted: @uncommitted || {}).plan
   end
 
   let(:upstream) { "1.0.20200601.000000" }
@@ -104,5 +106,19 @@ RSpec.describe Relspec::Plan::Planner do
   it "refuses a blacklist entry that matches no package" do
     expect { plan({ "near" => everything }, "blacklist" => [{ "match" => "base/nothing" }]) }
       .to raise_error(Relspec::InvalidInput) { |error| expect(error.diagnostics.first.message).to include('"base/nothing" matches no package') }
+  end
+
+  it "notes the checkouts with uncommitted changes, naming five files at most, and whether the package set patches them" do
+    change = Relspec::Catalog::UncommittedChanges::Change
+    expect(plan({}).notes.grep(/uncommitted/)).to eq([])
+    @uncommitted = { "base/types" => change.new(paths: %w[a b c d e f g], patched: false),
+                     "base/cmake" => change.new(paths: ["x"], patched: true) }
+    notes = plan({}).notes
+    expect(notes).to include(
+      "base/types has uncommitted changes in its checkout (a, b, c, d, e and 2 more): the release is made of its " \
+      "commit, without them",
+      "base/cmake has uncommitted changes in its checkout (x): the release is made of its commit, without them " \
+      "(they are not exactly the package set's patches, which the release applies)"
+    )
   end
 end
