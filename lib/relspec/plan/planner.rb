@@ -83,17 +83,18 @@ module Relspec
 
         note_missing_gem_dependencies(package, target)
         name = Debian::Naming.distribution_gem(package.name)
-        version = @distribution.version_of(name, target)
-        unless version
+        versions = @distribution.versions_of(name, target)
+        if versions.empty?
           @notes << "the #{target.codename} archive has no #{name}: gem #{package.name} is packaged here" if @distribution.read?(target)
           return nil
         end
 
-        if distribution_fits?(package, version)
+        # the newest that fits: a real ruby-<gem> may be newer than what libruby provides
+        if (version = versions.find { |candidate| distribution_fits?(package, candidate) })
           return Decision.new(package: package.name, kind: :system, deb_name: name, version: version).freeze
         end
 
-        @notes << "#{target.codename} has #{name} #{version}, the release packages gem #{package.name} #{package.version}"
+        @notes << "#{target.codename} has #{name} #{versions.join(', ')}, the release packages gem #{package.name} #{package.version}"
         nil
       end
 
