@@ -31,6 +31,10 @@ module Relspec
         end
       end
 
+      # A checkout's core.fsmonitor names a command git status would run:
+      # reading a workspace runs nothing of it.
+      NO_MONITOR = %w[-c core.fsmonitor=false].freeze
+
       # The files a note names at most.
       SHOWN_PATHS = 5
 
@@ -55,7 +59,8 @@ module Relspec
       def changed_paths(dir)
         return [] unless File.exist?(File.join(dir, ".git"))
 
-        output, status = Open3.capture2("git", "-C", dir, "status", "--porcelain", "--untracked-files=no", err: File::NULL)
+        output, status = Open3.capture2("git", *NO_MONITOR, "-C", dir, "status", "--porcelain", "--untracked-files=no",
+                                        err: File::NULL)
         return [] unless status.success?
 
         output.lines.map { |line| line.chomp[3..] }.compact.sort
@@ -76,7 +81,7 @@ module Relspec
 
       # The command's output when it succeeded, else nil.
       def git(env, dir, *args, stdin: "")
-        output, status = Open3.capture2(env, "git", "-C", dir, *args, stdin_data: stdin, err: File::NULL)
+        output, status = Open3.capture2(env, "git", *NO_MONITOR, "-C", dir, *args, stdin_data: stdin, err: File::NULL)
         status.success? ? output : nil
       end
     end

@@ -38,6 +38,10 @@ RSpec.describe "uncommitted changes in checkouts" do
     end
     File.write(File.join(root, "src", "changed", "src", "a.c"), "int a = 2;\n")
     File.write(File.join(root, "src", "patched_more", "CMakeLists.txt"), "project(y)\n")
+    # bad input: a checkout whose git configuration names a command git status would run
+    _, status = Open3.capture2e("git", "-C", File.join(root, "src", "changed"), "config", "core.fsmonitor",
+                                "touch #{File.join(@base, 'monitor-ran')}; false")
+    raise "git config failed" unless status.success?
     # untracked: not the package's
     File.write(File.join(root, "src", "clean", "notes.txt"), "mine\n")
     FileUtils.mkdir_p(File.join(@base, "specs"))
@@ -61,5 +65,6 @@ RSpec.describe "uncommitted changes in checkouts" do
        "patched_more has uncommitted changes in its checkout (CMakeLists.txt, src/a.c): the release is made of its " \
        "commit, without them (they are not exactly the package set's patches, which the release applies)"]
     )
+    expect(File.exist?(File.join(@base, "monitor-ran"))).to be(false)
   end
 end
