@@ -3,6 +3,7 @@
 require "open3"
 require "tmpdir"
 require_relative "../printable"
+require_relative "../worker_pool"
 
 module Relspec
   class Catalog
@@ -40,20 +41,30 @@ module Relspec
 
       module_function
 
+      # git processes at once: most of a `git status` is starting git (300
+      # checkouts: 1.6-1.8 s one at a time, 1.2-1.3 s four at a time, on
+      # this project's loaded 2-core machine).
+      THREADS = 4
+
       # +root+: the workspace; +packages+: Catalog::Package of the release.
-      # Returns name => Change for the git checkouts with changes.
-      def read(root, packages)
-        packages.filter_map do |package|
-          next unless package.checked_out && package.source_dir && package.vcs.type == "git"
+      # Returns name => Change for the git checkouts with changes, by name.
+      def read(root, packages, threads: THREADS)
+        checkouts = packages.select { |package| package.checked_out && package.source_dir && package.vcs.type == "git" }
+        found = {}
+        lock = Mutex.new
+        WorkerPool.new(threads).each(checkouts) do |package|
+          change = change_of(File.join(root, package.source_dir), package.patches)
+          lock.synchronize { found[package.name] = change } if change
+        end
+        found.sort.to_h
+      end
 
-          dir = File.join(root, package.source_dir)
-          paths = changed_paths(dir)
-          next if paths.empty?
-          next if !package.patches.empty? && only_patches?(dir, package.patches)
+      def change_of(dir, patches)
+        paths = changed_paths(dir)
+        return nil if paths.empty?
+        return nil if !patches.empty? && only_patches?(dir, patches)
 
-          [package.name, Change.new(paths: paths.map { |path| Printable.text(path) }.freeze,
-                                    patched: !package.patches.empty?)]
-        end.to_h
+        Change.new(paths: paths.map { |path| Printable.text(path) }.freeze, patched: !patches.empty?)
       end
 
       def changed_paths(dir)
