@@ -42,6 +42,7 @@ RSpec.describe "uncommitted changes in checkouts" do
     _, status = Open3.capture2e("git", "-C", File.join(root, "src", "changed"), "config", "core.fsmonitor",
                                 "touch #{File.join(@base, 'monitor-ran')}; false")
     raise "git config failed" unless status.success?
+
     # untracked: not the package's
     File.write(File.join(root, "src", "clean", "notes.txt"), "mine\n")
     FileUtils.mkdir_p(File.join(@base, "specs"))
