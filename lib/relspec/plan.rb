@@ -2,6 +2,7 @@
 
 require_relative "release_spec"
 require_relative "catalog/release_catalog"
+require_relative "catalog/uncommitted_changes"
 require_relative "catalog/cache"
 require_relative "project"
 require_relative "plan/target"
@@ -60,7 +61,17 @@ module Relspec
       root = project_root(path)
       Facts.new(resolution: resolution, release_catalog: release_catalog, ancestors: ancestors, inventory: inventory,
                 distribution: distribution, own: own, previous: previous, lock_path: lock_path, project_root: root,
-                overlays: ->(name, arch) { Debian::Overlay.for(root, name, arch: arch) })
+                overlays: ->(name, arch) { Debian::Overlay.for(root, name, arch: arch) },
+                uncommitted: uncommitted_of(release_catalog))
+    end
+
+    # The selected checkouts' changes beyond their commits (none from a snapshot).
+    def self.uncommitted_of(release_catalog)
+      workspace = release_catalog.workspace
+      return {} if Catalog::SnapshotSource.snapshot?(workspace)
+
+      names = release_catalog.selections.values.flat_map(&:names).uniq
+      Catalog::UncommittedChanges.read(workspace, names.map { |name| release_catalog.catalog.package(name) })
     end
 
     # The decisions over what was read (+facts+: Facts), versions settled,
@@ -69,7 +80,8 @@ module Relspec
       resolution = facts.resolution
       effective = resolution.effective
       planner = Planner.new(release_catalog: facts.release_catalog, effective: effective, spec_file: resolution.spec_file,
-                            ancestors: facts.ancestors, inventory: facts.inventory, distribution: facts.distribution)
+                            ancestors: facts.ancestors, inventory: facts.inventory, distribution: facts.distribution,
+                            uncommitted: facts.uncommitted || {})
       plan, work = settle(planner.plan, facts)
       history = facts.previous&.history || History.empty
       Result.new(resolution: resolution, release_catalog: facts.release_catalog, plan: plan,

@@ -14,6 +14,7 @@ require_relative "copyright_holders"
 require_relative "package_environment"
 require_relative "orogen_arguments"
 require_relative "cmake_defines"
+require_relative "prefix_markers"
 require_relative "import_patch"
 require_relative "autoproj_osdeps"
 
@@ -189,17 +190,20 @@ module Relspec
         ws.load_package_sets(only_local: true, checkout_only: true)
         AutoprojOsdeps.warn_spaced_keys(resolver)
         ws.setup_all_package_directories
-        ws.finalize_package_setup
-        ws.manifest.each_package_definition do |definition|
-          if manifests[definition.name]
-            load_manifest_file(ws, definition, manifests[definition.name])
-          elsif definition.checked_out?
-            ws.manifest.load_package_manifest(definition.name)
+        markers = PrefixMarkers.new(ws.manifest.each_autobuild_package.to_a, prefix_dir: ws.prefix_dir)
+        markers.while_marked do
+          ws.finalize_package_setup
+          ws.manifest.each_package_definition do |definition|
+            if manifests[definition.name]
+              load_manifest_file(ws, definition, manifests[definition.name])
+            elsif definition.checked_out?
+              ws.manifest.load_package_manifest(definition.name)
+            end
           end
+          run_post_import_blocks(ws)
         end
-        run_post_import_blocks(ws)
         ws.finalize_setup(read_only: true)
-        extract(ws, manifests)
+        extract(ws, manifests, markers)
       ensure
         ws&.clear_main_workspace
       end
@@ -240,14 +244,14 @@ module Relspec
         OrogenArguments.reset
       end
 
-      def extract(ws, manifests)
+      def extract(ws, manifests, markers)
         manifest = ws.manifest
         packages = {}
         os_dependencies = {}
         # every osdep name is resolved once per load, however many packages use it
         resolved = Hash.new { |cache, name| cache[name] = AutoprojOsdeps.classify(ws.os_package_resolver, name) }
         manifest.each_package_definition do |definition|
-          packages[definition.name] = package_data(ws, definition)
+          packages[definition.name] = package_data(ws, definition, markers)
           # a pinned commit's manifest is named as the checkout's file, not the temporary copy
           packages[definition.name]["manifest"] = relative(ws, File.join(definition.autobuild.srcdir, "manifest.xml")) if manifests[definition.name]
           os_dependencies[definition.name] = os_dependencies_of(definition.autobuild, resolved)
@@ -286,15 +290,15 @@ module Relspec
         }
       end
 
-      def package_data(ws, definition)
+      def package_data(ws, definition, markers)
         autobuild = definition.autobuild
         optional_packages, = autobuild.partition_optional_dependencies
         {
           "package_set" => definition.package_set.name, "build_type" => build_type(autobuild),
           "vcs" => vcs_data(ws, definition.vcs), "source_dir" => relative(ws, autobuild.srcdir),
           "checked_out" => definition.checked_out?, "dependencies" => autobuild.dependencies.sort,
-          "optional_dependencies" => optional_packages.sort, "defines" => CmakeDefines.of(autobuild, root_dir: ws.root_dir),
-          "environment" => PackageEnvironment.of(autobuild, root_dir: ws.root_dir),
+          "optional_dependencies" => optional_packages.sort, "defines" => CmakeDefines.of(autobuild, root_dir: ws.root_dir, markers: markers),
+          "environment" => PackageEnvironment.of(autobuild, root_dir: ws.root_dir, markers: markers),
           "orogen_arguments" => OrogenArguments.of(autobuild), "patches" => ImportPatch.list_of(autobuild.importer) { |path| relative(ws, path) }
         }.compact.merge(manifest_data(ws, autobuild.description))
       end

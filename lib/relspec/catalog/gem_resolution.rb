@@ -43,7 +43,8 @@ module Relspec
 
       # +selected+: codename => the selected package names of +catalog+;
       # +pinned+: `gems:`; +archives+: target name => {ruby-* name =>
-      # version}, nil for a target whose archive was not read (or a callable
+      # [versions, newest first] (or one version)}, nil for a target whose
+      # archive was not read (or a callable
       # giving that); +locked+: name
       # => the version the lock recorded; +versions+: GemVersions; +fetch+:
       # (name, version) → GemArchive; +blacklisted+: name → bool;
@@ -159,8 +160,11 @@ module Relspec
 
         deb = Debian::Naming.distribution_gem(name)
         @archives.values.all? do |found|
-          version = found&.[](deb)&.then { |text| Debian::GemVersion.from_debian(text) }
-          version && yield(version)
+          # any version the archive has (a real ruby-<gem> and libruby's Provides)
+          Array(found&.[](deb)).any? do |text|
+            version = Debian::GemVersion.from_debian(text)
+            version && yield(version)
+          end
         end
       end
 

@@ -14,14 +14,16 @@ module Relspec
 
       module_function
 
-      # +autobuild+: the Autobuild::Package after loading; nil when it has none.
-      def of(autobuild, root_dir:)
+      # +autobuild+: the Autobuild::Package after loading; +markers+: the
+      # PrefixMarkers of the load (a prefix read while they were set is
+      # autoproj's again). nil when it has none.
+      def of(autobuild, root_dir:, markers:)
         operations = autobuild.env.select { |op| TYPES.include?(op.type) && op.values.all?(String) }
         return nil if operations.empty?
 
         prefix = autobuild.prefix.to_s
         operations.map do |op|
-          values = op.values.map { |value| value.gsub(prefix, "$PREFIX").gsub(root_dir, "$AUTOPROJ_ROOT") }
+          values = op.values.map { |value| markers.restore(value).gsub(prefix, "$PREFIX").gsub(root_dir, "$AUTOPROJ_ROOT") }
           { "type" => op.type.to_s, "name" => op.name.to_s, "values" => values }
         end
       end

@@ -13,12 +13,17 @@ module Relspec
     # would have a compiled package install Ruby code, relative to the
     # prefix (Distribution#ruby_install_dirs), and +closure_tools+: the
     # build-only tools of its whole dependency closure
-    # (ControlRelations.build_only), sorted. Immutable.
+    # (ControlRelations.build_only), sorted; +prefixes+: the prefix on the
+    # target of each package the package's defines name
+    # (Catalog::PrefixMarkers), by autoproj name; one without a decision on
+    # the target is missing. Immutable.
     BuildInput = Struct.new(:package, :deb_name, :upstream, :codename, :release, :maintainer, :install_dir,
                             :debhelper_compat, :dependencies, :apt, :gems, :gem, :ruby_dirs, :closure_tools,
-                            keyword_init: true) do
-      def initialize(debhelper_compat: BuildInput::DEFAULT_COMPAT, gem: nil, ruby_dirs: [], closure_tools: [], **fields)
-        super
+                            :prefixes, keyword_init: true) do
+      def initialize(debhelper_compat: BuildInput::DEFAULT_COMPAT, gem: nil, ruby_dirs: [], closure_tools: [],
+                     prefixes: {}, **fields)
+        super(debhelper_compat: debhelper_compat, gem: gem, ruby_dirs: ruby_dirs, closure_tools: closure_tools,
+              prefixes: prefixes.dup.freeze, **fields)
         freeze
       end
     end

@@ -9,6 +9,7 @@ require_relative "build_input"
 require_relative "environment_file"
 require_relative "../osdeps/trust"
 require_relative "../yaml/writer"
+require_relative "../catalog/prefix_markers"
 
 module Relspec
   module Debian
@@ -128,16 +129,28 @@ module Relspec
       # build type, tests off (base/cmake's ROCK_TEST_ENABLED); then the
       # package set's defines (pkg.define, Autobuild::CMake.define), which
       # win; then the prefix, which the release decides. Each option is one
-      # shell word; "$" is doubled for make.
+      # shell word; "$" is doubled for make. A define naming another
+      # package's prefix gets the prefix the release gives that package; one
+      # naming a package the release does not have on the target is left
+      # out, as if the package set had not seen the package.
       ROCK_CMAKE_DEFINES = { "CMAKE_BUILD_TYPE" => "Release", "ROCK_TEST_ENABLED" => "OFF" }.freeze
 
       def cmake_options
-        defines = ROCK_CMAKE_DEFINES.merge(@in.package.defines)
+        defines = ROCK_CMAKE_DEFINES.merge(released_defines)
                                     .merge("CMAKE_INSTALL_PREFIX" => "$(PREFIX)", "CMAKE_INSTALL_LIBDIR" => "lib")
         defines.map do |name, value|
           option = "-D#{name}=#{value}"
           value == "$(PREFIX)" ? option : shell_word(option.gsub("$", "$$"))
         end.join(" ")
+      end
+
+      def released_defines
+        @in.package.defines.filter_map do |name, value|
+          names = value.scan(Catalog::PrefixMarkers::REFERENCE).flatten
+          next unless names.all? { |package| @in.prefixes.key?(package) }
+
+          [name, value.gsub(Catalog::PrefixMarkers::REFERENCE) { @in.prefixes.fetch(Regexp.last_match(1)) }]
+        end.to_h
       end
 
       # The generator's words as autoproj gives them (Catalog::OrogenArguments),

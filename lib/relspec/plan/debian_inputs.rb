@@ -3,6 +3,7 @@
 require_relative "../debian/control_relations"
 require_relative "../debian/build_input"
 require_relative "../release_spec/values/prefixes"
+require_relative "../catalog/prefix_markers"
 
 module Relspec
   module Plan
@@ -36,8 +37,20 @@ module Relspec
           dependencies: dependencies_of(package, decisions), apt: os.apt,
           gems: Debian::ControlRelations.distribution_gems(os, @release_catalog.gems.keys),
           gem: @release_catalog.gems[package.name],
-          closure_tools: closure_tools(package, target, decisions)
+          closure_tools: closure_tools(package, target, decisions),
+          prefixes: prefixes_of(package, decisions)
         )
+      end
+
+      # The prefixes on the target of the packages +package+'s defines
+      # name (Catalog::PrefixMarkers): where the release installs them; a
+      # package of the distribution lives in /usr. Those without a decision
+      # on the target are left out.
+      def prefixes_of(package, decisions)
+        names = package.defines.values.flat_map { |value| value.scan(Catalog::PrefixMarkers::REFERENCE).flatten }
+        names.uniq.select { |name| decisions.key?(name) }.sort.to_h do |name|
+          [name, install_dir_of(decisions[name]) || "/usr"]
+        end
       end
 
       # The folder a decided package installs into; nil for the

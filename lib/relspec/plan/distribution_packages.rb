@@ -42,29 +42,34 @@ module Relspec
         new(found, targets.reject { |target| found.key?(target) || gaps.key?(target) }, gaps)
       end
 
-      # Newest version of each wanted name over the archive's components,
-      # from the packages of that name and from versioned Provides: Ruby's
-      # default gems are ruby-<gem> virtual packages of libruby<version>
-      # ("Provides: ruby-date (= 3.2.2)" on bookworm).
+      # Every version of each wanted name over the archive's components,
+      # newest first, from the packages of that name and from versioned
+      # Provides: Ruby's default gems are ruby-<gem> virtual packages of
+      # libruby<version> ("Provides: ruby-date (= 3.2.2)" on bookworm), and
+      # a real ruby-<gem> may be newer than what libruby provides (minitest:
+      # 5.17.0 and libruby3.1's 5.15.0 on bookworm), when a gem's
+      # requirement fits the provided one only.
       def self.versions(repository, archive, target, wanted, cache)
-        archive.read_components.each_with_object({}) do |component, out|
+        found = archive.read_components.each_with_object(Hash.new { |hash, name| hash[name] = [] }) do |component, out|
           index = ArchiveVersions.of(repository, target, component, cache)
           names = wanted.is_a?(Regexp) ? index.names.grep(wanted) : wanted
-          names.each { |name| newest(out, name, index.version(name)) }
-          index.each_provided(wanted) { |name, version| newest(out, name, version) }
+          names.each { |name| out[name] << index.version(name) if index.version(name) }
+          index.each_provided(wanted) { |name, version| out[name] << version }
         end
+        found.to_h { |name, versions| [name, newest_first(versions)] }
       end
       private_class_method :versions
 
-      def self.newest(out, name, version)
-        out[name] = version if version && (out[name].nil? || Apt::Version.parse(version) > Apt::Version.parse(out[name]))
+      def self.newest_first(versions)
+        versions.uniq.sort_by { |version| Apt::Version.parse(version) }.reverse.freeze
       end
-      private_class_method :newest
+      private_class_method :newest_first
 
       attr_reader :unknown, :gaps
 
-      # +found+: Target => {name => version}; +unknown+: targets without an
-      # archive; +gaps+: Target => why its archive has nothing for it.
+      # +found+: Target => {name => [versions, newest first]}; +unknown+:
+      # targets without an archive; +gaps+: Target => why its archive has
+      # nothing for it.
       def initialize(found, unknown, gaps = {})
         @found = found.freeze
         @unknown = unknown.freeze
@@ -72,12 +77,19 @@ module Relspec
         freeze
       end
 
+      # The newest version of +name+ on +target+, nil when it has none.
       def version_of(name, target)
-        @found.dig(target, name)
+        versions_of(name, target).first
       end
 
-      # name => version of what was looked up in the target's archive, nil
-      # when it was not read.
+      # Every version of +name+ the target's archive has (packages and
+      # Provides), newest first.
+      def versions_of(name, target)
+        @found.dig(target, name) || []
+      end
+
+      # name => [versions, newest first] of what was looked up in the
+      # target's archive, nil when it was not read.
       def index(target)
         @found[target]
       end

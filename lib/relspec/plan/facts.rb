@@ -13,8 +13,9 @@ module Relspec
     # +previous+: the Lock read (nil: none, or discarded); +lock_path+: where
     # the lock is written; +project_root+: where specs/, releases/ and
     # overlays/ are; +overlays+: callable (package name, arch) →
-    # Debian::Overlay.
+    # Debian::Overlay; +uncommitted+: name => Catalog::UncommittedChanges::Change
+    # for the selected checkouts with changes beyond their commit.
     Facts = Struct.new(:resolution, :release_catalog, :ancestors, :inventory, :distribution, :own, :previous,
-                       :lock_path, :project_root, :overlays, keyword_init: true)
+                       :lock_path, :project_root, :overlays, :uncommitted, keyword_init: true)
   end
 end

@@ -31,10 +31,11 @@ module Relspec
       # +release_catalog+: Catalog::ReleaseCatalog; +effective+: the
       # release's EffectiveSpec; +spec_file+: its SpecFile (for locations);
       # +ancestors+: Plan::Ancestor in search order; +inventory+: Inventory;
-      # +distribution+: DistributionPackages (the targets' own ruby-* packages).
+      # +distribution+: DistributionPackages (the targets' own ruby-* packages);
+      # +uncommitted+: name => Catalog::UncommittedChanges::Change (noted).
       # Builds come out unversioned: Settlement gives them their versions.
       def initialize(release_catalog:, effective:, spec_file:, ancestors:, inventory:,
-                     distribution: DistributionPackages.new({}, []))
+                     distribution: DistributionPackages.new({}, []), uncommitted: {})
         @catalog = release_catalog.catalog
         @selections = release_catalog.selections
         @effective = effective
@@ -45,6 +46,7 @@ module Relspec
         @gem_requirements = release_catalog.gem_resolution.requirements
         @warnings = []
         @notes = release_catalog.gem_resolution.notes.dup
+        @uncommitted = uncommitted
       end
 
       def plan
@@ -53,6 +55,8 @@ module Relspec
         unavailable = targets.to_h { |target| [target, unavailable_on(target)] }
         decisions = targets.to_h { |target| [target, plan_target(target, blacklist, unavailable[target])] }
         note_gems_without_archive
+        # what a checkout holds beyond its commit is not in the release
+        @uncommitted.sort.each { |name, change| @notes << change.note(name) }
         ReleasePlan.new(release: @effective.release, targets: decisions, packages: package_records(decisions, unavailable),
                         release_digests: @inventory.release_digests, warnings: merged_warnings, notes: @notes.uniq.sort,
                         unavailable: unavailable)
@@ -79,17 +83,18 @@ module Relspec
 
         note_missing_gem_dependencies(package, target)
         name = Debian::Naming.distribution_gem(package.name)
-        version = @distribution.version_of(name, target)
-        unless version
+        versions = @distribution.versions_of(name, target)
+        if versions.empty?
           @notes << "the #{target.codename} archive has no #{name}: gem #{package.name} is packaged here" if @distribution.read?(target)
           return nil
         end
 
-        if distribution_fits?(package, version)
+        # the newest that fits: a real ruby-<gem> may be newer than what libruby provides
+        if (version = versions.find { |candidate| distribution_fits?(package, candidate) })
           return Decision.new(package: package.name, kind: :system, deb_name: name, version: version).freeze
         end
 
-        @notes << "#{target.codename} has #{name} #{version}, the release packages gem #{package.name} #{package.version}"
+        @notes << "#{target.codename} has #{name} #{versions.join(', ')}, the release packages gem #{package.name} #{package.version}"
         nil
       end
 

@@ -66,6 +66,13 @@ RSpec.describe "the real Rock package sets" do
               { "type" => "add_path", "name" => "QT_PLUGIN_PATH", "values" => ["$PREFIX/lib/qt"] }])
   end
 
+  # `pkg.define 'SISL_PREFIX', package('external/sisl').prefix`: in the default layout every
+  # prefix is $AUTOPROJ_ROOT/install, yet the catalog names external/sisl's (the release's, in debian/rules)
+  it "keeps a define naming external/sisl's prefix as a reference to external/sisl" do
+    expect(catalog_of.package("base/types").defines).to include("SISL_PREFIX" => "${prefix:external/sisl}",
+                                                                "USE_SISL" => "OFF")
+  end
+
   it "carries rock.core's import patch of tools/class_loader with its level and text" do
     catalog = catalog_of
     patches = catalog.package("tools/class_loader").patches

@@ -18,11 +18,15 @@ RSpec.describe Relspec::Plan::DebianInputs do
       "base/types" => ["ruby", %w[base/logging tools/gen], ["ruby-rice"]],
       "gem/x" => ["gem", [], ["autoconf"]] }
   end
+  # CMake defines naming other packages' prefixes (Catalog::PrefixMarkers), by package
+  let(:defines) do
+    { "base/logging" => { "CM" => "${prefix:base/cmake}/lib", "GONE" => "${prefix:not/released}", "TYPE" => "Release" } }
+  end
   let(:catalog) do
     packages = graph.to_h do |name, (type, dependencies, apt)|
       [name, Relspec::Catalog::Package.new(
         name: name, package_set: "set", build_type: type, commit_time: "2020-06-01T00:00:00Z", source_dir: "src/#{name}",
-        version: "1.0", dependencies: dependencies,
+        version: "1.0", dependencies: dependencies, defines: defines.fetch(name, {}),
         os_dependencies: { "bookworm" => Relspec::Catalog::OsDependencies.build(apt: apt) },
         vcs: Relspec::Catalog::Vcs.new(type: "git", url: "https://example.org/#{name}.git", commit: "c" * 40)
       )]
@@ -76,5 +80,14 @@ RSpec.describe Relspec::Plan::DebianInputs do
 
   it "takes nothing from a dependency the distribution provides (a system decision)" do
     expect(input("base/types", decisions("base/logging" => :system)).closure_tools).to eq(%w[cmake pkg-config])
+  end
+
+  it "gives a define naming a package's prefix the release prefix of that package, leaving out unreleased ones" do
+    logging = input("base/logging")
+    expect(logging.prefixes).to eq("base/cmake" => "/opt/rock/r/rock-r-base-cmake")
+    rules = Relspec::Debian::DebianDir.render(logging, version: "1.0-1~bookworm").fetch("rules").first
+    expect(rules).to include("-DCM=/opt/rock/r/rock-r-base-cmake/lib -DTYPE=Release -DCMAKE_INSTALL_PREFIX")
+    expect(rules).not_to include("GONE")
+    expect(input("base/logging", decisions("base/cmake" => :system)).prefixes).to eq("base/cmake" => "/usr")
   end
 end

@@ -2,10 +2,12 @@
 
 require_relative "../unit_helper"
 require "relspec/plan/planner"
+require "relspec/plan/distribution_packages"
 require "relspec/plan/ancestor"
 require "relspec/plan/inventory"
 require "relspec/plan/target"
 require "relspec/catalog/release_catalog"
+require "relspec/catalog/uncommitted_changes"
 require "relspec/release_spec/effective_spec"
 require "relspec/release_spec/spec_file"
 
@@ -38,6 +40,7 @@ RSpec.describe Relspec::Plan::Planner do
 
   # +held+: ancestor name => {package => upstream version}; an ancestor
   # without an entry does not have the target at all.
+  # +@uncommitted+: what a test gives as the checkouts' uncommitted changes
   def plan(held, spec = {})
     indices = held.to_h do |name, packages|
       entries = packages.to_h do |package, version|
@@ -53,7 +56,7 @@ RSpec.describe Relspec::Plan::Planner do
     )
     described_class.new(release_catalog: release_catalog, effective: effective, spec_file: spec_file,
                         ancestors: %w[near far].map { |name| ancestor(name) },
-                        inventory: Relspec::Plan::Inventory.new(indices, {})).plan
+                        inventory: Relspec::Plan::Inventory.new(indices, {}), uncommitted: @uncommitted || {}).plan
   end
 
   let(:upstream) { "1.0.20200601.000000" }
@@ -104,5 +107,48 @@ RSpec.describe Relspec::Plan::Planner do
   it "refuses a blacklist entry that matches no package" do
     expect { plan({ "near" => everything }, "blacklist" => [{ "match" => "base/nothing" }]) }
       .to raise_error(Relspec::InvalidInput) { |error| expect(error.diagnostics.first.message).to include('"base/nothing" matches no package') }
+  end
+
+  it "notes the checkouts with uncommitted changes, naming five files at most, and whether the package set patches them" do
+    change = Relspec::Catalog::UncommittedChanges::Change
+    expect(plan({}).notes.grep(/uncommitted/)).to eq([])
+    @uncommitted = { "base/types" => change.new(paths: %w[a b c d e f g], patched: false),
+                     "base/cmake" => change.new(paths: ["x"], patched: true) }
+    notes = plan({}).notes
+    expect(notes).to include(
+      "base/types has uncommitted changes in its checkout (a, b, c, d, e and 2 more): the release is made of its " \
+      "commit, without them",
+      "base/cmake has uncommitted changes in its checkout (x): the release is made of its commit, without them " \
+      "(they are not exactly the package set's patches, which the release applies)"
+    )
+  end
+
+  # bookworm: libruby3.1 provides ruby-minitest (= 5.15.0), the archive also has ruby-minitest 5.17.0
+  it "takes a gem from the distribution at the newest version that fits, a Provides older than the newest package" do
+    gem = Relspec::Catalog::Package.new(
+      name: "minitest", package_set: "gems", build_type: "gem", commit_time: "2020-06-01T00:00:00Z", source_dir: nil,
+      version: "5.15.0", vcs: Relspec::Catalog::Vcs.new(type: "gem", url: "https://rubygems.org", commit: nil)
+    )
+    catalog = Relspec::Catalog.new(packages: { "minitest" => gem }, layout: [], codenames: ["bookworm"])
+    requirements = ->(text) { { "minitest" => [Gem::Requirement.new(text)] } }
+    distribution = Relspec::Plan::DistributionPackages.new({ target => { "ruby-minitest" => %w[5.17.0 5.15.0] } }, [])
+    decide = lambda do |requirement|
+      resolution = Relspec::Catalog::GemResolution::Result.new(automatic: {}, requirements: requirements.call(requirement),
+                                                               provided: [], notes: [])
+      release = Relspec::Catalog::ReleaseCatalog.new(catalog, { "bookworm" => ["minitest"] }, { "bookworm" => {} },
+                                                     "/workspace", {}, resolution)
+      spec_file = Relspec::ReleaseSpec::SpecFile.new("specs/r.yml", Relspec::Yaml::LocatedDocument.parse("release: r\n", file: "specs/r.yml"))
+      effective = Relspec::ReleaseSpec::EffectiveSpec.new({ "release" => "r", "targets" => { "bookworm" => ["amd64"] } }, {})
+      planned = described_class.new(release_catalog: release, effective: effective, spec_file: spec_file, ancestors: [],
+                                    inventory: Relspec::Plan::Inventory.new({}, {}), distribution: distribution).plan
+      [planned.targets.fetch(target).fetch("minitest"), planned.notes]
+    end
+    decision, = decide.call("< 5.16")
+    expect([decision.kind, decision.deb_name, decision.version]).to eq([:system, "ruby-minitest", "5.15.0"])
+    decision, = decide.call(">= 5.16")
+    expect(decision.version).to eq("5.17.0")
+    decision, notes = decide.call("~> 5.16.0")
+    expect(decision.kind).to eq(:build)
+    expect(notes).to include("bookworm has ruby-minitest 5.17.0, 5.15.0, the release packages gem minitest 5.15.0")
   end
 end

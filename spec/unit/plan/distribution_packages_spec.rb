@@ -1,0 +1,50 @@
+# frozen_string_literal: true
+
+require_relative "../unit_helper"
+require "relspec/apt/package_index"
+require "relspec/plan/target"
+require "relspec/plan/distribution_packages"
+
+# What planning keeps of a distribution's archive, fed a small index in
+# memory: the repository and the archive stand for Apt::Repository and the
+# spec's archive value with the two calls that read an index (the readers
+# themselves have their own specs).
+RSpec.describe Relspec::Plan::DistributionPackages do
+  let(:target) { Relspec::Plan::Target.new("bookworm", "amd64").freeze }
+  let(:index) do
+    Relspec::Apt::PackageIndex.parse(<<~INDEX)
+      Package: ruby-minitest
+      Version: 5.17.0-1
+
+      Package: libruby3.1
+      Version: 3.1.2-7+deb12u1
+      Provides: ruby-minitest (= 5.15.0), ruby-date (= 3.2.2)
+
+      Package: libruby3.1-extra
+      Version: 1
+      Provides: ruby-minitest (= 5.15.0)
+    INDEX
+  end
+  let(:repository) do
+    Struct.new(:index) do
+      def index_digest(*, **)
+        "0" * 64
+      end
+
+      def packages(*, **)
+        index
+      end
+    end.new(index)
+  end
+  let(:archive) { Struct.new(:read_components).new(["main"]) }
+
+  it "keeps every version of a name, the package's and those provided, newest first" do
+    found = described_class.send(:versions, repository, archive, target, %w[ruby-minitest ruby-date ruby-none],
+                                 Relspec::Apt::Cache.new(nil))
+    expect(found).to eq("ruby-minitest" => %w[5.17.0-1 5.15.0], "ruby-date" => ["3.2.2"])
+    packages = described_class.new({ target => found }, [])
+    expect(packages.version_of("ruby-minitest", target)).to eq("5.17.0-1")
+    expect(packages.versions_of("ruby-minitest", target)).to eq(%w[5.17.0-1 5.15.0])
+    expect(packages.versions_of("ruby-none", target)).to eq([])
+  end
+end
