@@ -21,7 +21,7 @@ RSpec.describe "a define naming another package's prefix" do
         pkg.define 'DEP_CMAKE', File.join(package('external/dep').prefix, 'share', 'cmake')
         pkg.define 'GONE_PREFIX', package('external/gone').prefix
         pkg.define 'WORKSPACE_PREFIX', Autobuild.prefix
-        pkg.env_set 'APP_DATA', File.join(pkg.prefix, 'share', 'app')
+        pkg.env_set 'ROCK_PREFIX', File.join(pkg.prefix, 'share', 'app')
       end
     RUBY
     builder.create
