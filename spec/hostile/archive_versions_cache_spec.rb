@@ -2,6 +2,7 @@
 
 require "spec_helper"
 require "digest"
+require "relspec/apt/repository"
 require "zlib"
 require_relative "../support/release_file_editor"
 require_relative "../support/gem_osdep_release"
@@ -57,8 +58,8 @@ RSpec.describe "relspec plan with a hostile archive-versions cache", :tmpdir do
 
   # The archive-versions entry's path for the index as it is now.
   def entry
-    gz = File.binread(File.join(@dir, "debian", "dists", "bookworm", "#{INDEX}.gz"))
-    File.join(cache, "relspec", "apt", Digest::SHA256.hexdigest(gz), "archive-versions")
+    archive = Relspec::Apt::Repository.new(Relspec::Apt::Fetcher.new(File.join(@dir, "debian")), trusted: true)
+    File.join(cache, "relspec", "apt", archive.index_digest("bookworm", "amd64"), "archive-versions")
   end
 
   def planned(run)

@@ -73,10 +73,19 @@ module Relspec
       # lists that is present (not merely the first listed: a mirror may
       # list a Packages.xz it dropped while it updates the .gz). Raises
       # Missing like #packages; the bytes are kept for #packages.
+      #
+      # The digest of every form the Release file lists for that index
+      # (path, SHA256, size of Packages.xz, .gz and plain): whichever of them
+      # is read, it changes with it, and nothing but the Release file is
+      # downloaded to know it (a mirror that lists an absent .xz before the
+      # .gz it updates still gets a new key).
       def index_digest(codename, arch, component: "main")
         release = release(codename)
-        path, = present_index(codename, release, listed_indices(release, codename, arch, component))
-        release.checksum(path).sha256
+        listed = listed_indices(release, codename, arch, component).map do |path, _|
+          checksum = release.checksum(path)
+          "#{path} #{checksum.sha256} #{checksum.size}\n"
+        end
+        Digest::SHA256.hexdigest(listed.join)
       end
 
       private
