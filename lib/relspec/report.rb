@@ -68,6 +68,9 @@ module Relspec
       dir = tree.target_dir(target)
       plan = File.exist?(tree.plan_file(target)) ? Builder::BuildPlan.read(dir) : nil
       results = File.exist?(tree.results_file(target)) ? Builder::BuildResults.load(dir, release: release, target: target) : nil
+      # build-results.yml keeps records of packages a narrower plan left
+      # out; the page shows (and publishes the logs of) the plan's only
+      results = results.within(plan.entries.map(&:source)) if results && plan
       Reading::Input.new(target: target, dir: dir, plan: plan, results: results).freeze
     end
 
