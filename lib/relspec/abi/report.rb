@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require "json"
+require_relative "../rendered_formats"
 
 module Relspec
   module Abi
@@ -12,6 +13,8 @@ module Relspec
 
     # Its rendering.
     class Report
+      include RenderedFormats
+
       # +library+: the file name of the shared library.
       Entry = Struct.new(:package, :library, :against, :verdict, keyword_init: true) do
         def name
@@ -28,14 +31,6 @@ module Relspec
       # True when some library's verdict is +threshold+ or worse.
       def fails?(threshold)
         targets.any? { |one| one.entries.any? { |entry| entry.verdict&.at_least?(threshold) } }
-      end
-
-      def render(format)
-        case format
-        when "json" then "#{JSON.pretty_generate(to_h)}\n"
-        when "markdown" then markdown
-        else text
-        end
       end
 
       def to_h

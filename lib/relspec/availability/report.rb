@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require "json"
+require_relative "../rendered_formats"
 
 module Relspec
   module Availability
@@ -9,6 +10,8 @@ module Relspec
     # that need it and a hint. Rendered as text, Markdown or JSON; the order
     # is fixed (targets, then names) so equal inputs give equal bytes.
     class Report
+      include RenderedFormats
+
       # +status+: :ok, :missing, :problem (the source failed: +reason+),
       # :unchecked (no source: +reason+), :partial (+unknown+ relations had
       # no answer, e.g. not in the Launchpad cache).
@@ -32,14 +35,6 @@ module Relspec
       # Targets that were not (fully) checked, without being an error.
       def unchecked
         targets.select { |result| %i[unchecked partial].include?(result.status) }
-      end
-
-      def render(format)
-        case format
-        when "json" then "#{JSON.pretty_generate(to_h)}\n"
-        when "markdown" then markdown
-        else text
-        end
       end
 
       def to_h

@@ -27,7 +27,7 @@ module Relspec
                    Mirror.run(spec, out: output, targets: @targets, timeout: @timeout, progress: @progress,
                                     install: @install)
                  end
-        @io.write(@format == "json" ? report.json : report.text)
+        @io.write(report.render(@format))
         report.complete? ? 0 : 1
       end
 

@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require "json"
+require_relative "../rendered_formats"
 
 module Relspec
   module Mirror
@@ -9,6 +10,8 @@ module Relspec
     # and as JSON. Only facts of the mirror go in (no times, no paths of the
     # machine that made it): the same mirror gives the same bytes.
     class Report
+      include RenderedFormats
+
       # +counts+: Hash of what the closure holds; +changes+: added/removed
       # (nil for verify); +missing+: lines; +checks+: Proof::Check.
       TargetReport = Struct.new(:target, :counts, :changes, :missing, :checks, keyword_init: true) do
@@ -40,10 +43,6 @@ module Relspec
                                                  "problems" => check.problems }]
                                 end }]
           end }
-      end
-
-      def json
-        "#{JSON.pretty_generate(to_h)}\n"
       end
 
       def text

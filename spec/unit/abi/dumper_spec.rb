@@ -6,14 +6,7 @@ require "fileutils"
 require "zlib"
 require "relspec/abi/dumper"
 
-RSpec.describe Relspec::Abi::Dumper do
-  around do |example|
-    Dir.mktmpdir("relspec-unit-dumper") do |dir|
-      @dir = dir
-      example.run
-    end
-  end
-
+RSpec.describe Relspec::Abi::Dumper, :tmpdir do
   def file(path, content)
     full = File.join(@dir, path)
     FileUtils.mkdir_p(File.dirname(full))

@@ -6,14 +6,7 @@ require "relspec/catalog/package"
 require "relspec/catalog/archive_import"
 require_relative "../../support/http_server"
 
-RSpec.describe Relspec::Catalog::ArchiveImport do
-  around do |example|
-    Dir.mktmpdir("relspec-archive-unit") do |dir|
-      @dir = dir
-      example.run
-    end
-  end
-
+RSpec.describe Relspec::Catalog::ArchiveImport, :tmpdir do
   def package(url)
     Relspec::Catalog::Package.new(name: "external/x", package_set: "set", build_type: "archive", commit_time: nil,
                                   source_dir: "src/external/x", vcs: Relspec::Catalog::Vcs.new(type: "archive", url: url).freeze)

@@ -36,6 +36,6 @@ RSpec.describe Relspec::Mirror::Report do
         dynamic proof: passed (d)
     TEXT
     expect(report.markdown).to include("## bookworm/amd64: NOT complete", "- missing: libx (needed by app 1)")
-    expect(JSON.parse(report.json).dig("targets", "bookworm/amd64", "checks", "static", "status")).to eq("passed")
+    expect(JSON.parse(report.render("json")).dig("targets", "bookworm/amd64", "checks", "static", "status")).to eq("passed")
   end
 end
