@@ -7,6 +7,7 @@ require_relative "release_spec"
 require_relative "target"
 require_relative "atomic_file"
 require_relative "apt/cache"
+require_relative "builder/chroot"
 require_relative "mirror/binary_index"
 require_relative "mirror/closure"
 require_relative "mirror/sources"
@@ -122,13 +123,13 @@ module Relspec
       checks
     end
 
-    # This machine's own architecture, or one binfmt runs under qemu.
+    # This machine's own architecture, or one it runs by emulation: the
+    # builder's own check (Builder::Emulation).
     def self.runs?(arch)
-      native, = Open3.capture2("dpkg", "--print-architecture")
-      return true if native.strip == arch
-
-      qemu = { "arm64" => "aarch64", "armhf" => "arm", "i386" => "i386" }.fetch(arch, arch)
-      File.exist?("/proc/sys/fs/binfmt_misc/qemu-#{qemu}")
+      Builder::Emulation.new(Builder::Chroot.host_arch).check(arch)
+      true
+    rescue BuildError
+      false
     end
 
     # Files the mirror's indices list that are absent or not what the
