@@ -27,6 +27,13 @@ module Relspec
 
       DEBHELPER = "debhelper-compat (= 13)"
 
+      # What autoproj installs for itself in every workspace (its bootstrap
+      # osdeps: Ruby with its headers), so every CMake build autoproj runs
+      # finds them: base/cmake's RockRuby (rock_ruby_library, used by
+      # tools/orogen_metadata, typelib's and base/types' bindings) stops at
+      # `Could NOT find Ruby` without ruby-dev. A clean chroot has neither.
+      AUTOPROJ_OWN = { "cmake" => ["ruby-dev"], "orogen" => ["ruby-dev"] }.freeze
+
       module_function
 
       # What a package's users need at their own build time that its
@@ -62,7 +69,8 @@ module Relspec
       def build_depends(build_type, own, os, debhelper: DEBHELPER, closure: [])
         return [debhelper] if build_type == "meta"
 
-        ([debhelper] + BUILD_TOOLS.fetch(build_type, []) + own + os + closure).uniq
+        ([debhelper] + BUILD_TOOLS.fetch(build_type, []) + own + os + closure +
+         AUTOPROJ_OWN.fetch(build_type, [])).uniq
       end
 
       # What a gem that ships headers for other code (GemArchive#ships_headers?)
