@@ -13,7 +13,9 @@ require_relative "../../support/build_release"
 # that calls pkg-config, which it declares as an OS dependency. base/two uses
 # that module at its build time, so the clean chroot has pkg-config only when
 # base/two's Build-Depends carry the build-only tools of its dependency
-# closure (issue 32; base/one's Depends leave pkg-config out).
+# closure (issue 32; base/one's Depends leave pkg-config out). The module
+# also finds Ruby's headers as base/cmake's RockRuby does: autoproj installs
+# them for itself in every workspace, so every CMake build gets ruby-dev.
 RSpec.describe "relspec build --backend sbuild", order: :defined do
   before(:all) do
     @dir = Dir.mktmpdir("relspec-build-sbuild")
@@ -22,7 +24,7 @@ RSpec.describe "relspec build --backend sbuild", order: :defined do
     @release = BuildRelease.new(@dir, "sb")
     @release.osdeps("pkg-config:\n  debian: pkg-config\n")
     @release.package("base/one", cmake: "install(FILES one-config.cmake DESTINATION share/cmake/one)",
-                                 osdeps: ["pkg-config"], files: { "one-config.cmake" => "find_package(PkgConfig REQUIRED)\n" })
+                                 osdeps: ["pkg-config"], files: { "one-config.cmake" => "find_package(PkgConfig REQUIRED)\nfind_package(Ruby REQUIRED)\n" })
     @release.package("base/two", dependencies: ["base/one"], cmake: "find_package(one REQUIRED)")
     @release.compile
   end
@@ -48,6 +50,8 @@ RSpec.describe "relspec build --backend sbuild", order: :defined do
     expect(two).to match(/Unpacking #{Regexp.escape(@release.source('base/one'))} /)
     expect(two).to match(/Unpacking pkg-config:amd64 /)
     expect(two).to include("Found PkgConfig: /usr/bin/pkg-config")
+    expect(two).to match(/Unpacking ruby-dev:amd64 /)
+    expect(two).to match(/Found Ruby: .*ruby/)
 
     mtime = File.mtime(chroot)
     again = build("--prepare")
