@@ -24,7 +24,7 @@ RSpec.describe "relspec build --backend sbuild", order: :defined do
     @release = BuildRelease.new(@dir, "sb")
     @release.osdeps("pkg-config:\n  debian: pkg-config\n")
     @release.package("base/one", cmake: "install(FILES one-config.cmake DESTINATION share/cmake/one)",
-                                 osdeps: ["pkg-config"], files: { "one-config.cmake" => "find_package(PkgConfig REQUIRED)\nfind_package(Ruby REQUIRED)\n" })
+                                 osdeps: ["pkg-config"], files: { "one-config.cmake" => "find_package(PkgConfig REQUIRED)\nenable_language(C)\nfind_package(Ruby REQUIRED)\n" })
     @release.package("base/two", dependencies: ["base/one"], cmake: "find_package(one REQUIRED)")
     @release.compile
   end
