@@ -18,7 +18,7 @@ $LOAD_PATH.unshift(File.expand_path("../lib", __dir__))
 require "relspec/apt/package_index"
 require "relspec/osdeps/selection"
 require "relspec/osdeps/blacklist_file"
-require "relspec/release_spec/package_pattern"
+require "relspec/release_specs/package_pattern"
 
 COUNT = Integer(ARGV.fetch(0, "400"))
 BLACKLISTED = Integer(ARGV.fetch(1, "5"))

@@ -2,4 +2,4 @@
 
 require_relative "relspec/version"
 require_relative "relspec/error"
-require_relative "relspec/release_spec"
+require_relative "relspec/release_specs"

@@ -1,7 +1,7 @@
 # frozen_string_literal: true
 
 require "digest"
-require_relative "release_spec"
+require_relative "release_specs"
 require_relative "error"
 require_relative "target"
 require_relative "output_tree"

@@ -2,7 +2,7 @@
 
 require "digest"
 require "fileutils"
-require_relative "release_spec"
+require_relative "release_specs"
 require_relative "error"
 require_relative "target"
 require_relative "output_tree"

@@ -3,7 +3,7 @@
 require "fileutils"
 require "open3"
 require "yaml"
-require_relative "release_spec"
+require_relative "release_specs"
 require_relative "target"
 require_relative "atomic_file"
 require_relative "apt/cache"

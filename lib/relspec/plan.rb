@@ -1,6 +1,6 @@
 # frozen_string_literal: true
 
-require_relative "release_spec"
+require_relative "release_specs"
 require_relative "catalog/release_catalog"
 require_relative "catalog/uncommitted_changes"
 require_relative "catalog/cache"

@@ -1,7 +1,7 @@
 # frozen_string_literal: true
 
 require "fileutils"
-require_relative "release_spec"
+require_relative "release_specs"
 require_relative "plan/ancestor"
 require_relative "plan/inventory"
 require_relative "atomic_file"

@@ -1,7 +1,7 @@
 # frozen_string_literal: true
 
 require "fileutils"
-require_relative "release_spec"
+require_relative "release_specs"
 require_relative "project"
 require_relative "output_tree"
 require_relative "target"

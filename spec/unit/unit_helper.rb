@@ -71,7 +71,7 @@ RSpec.configure do |config|
   end
 end
 
-require "relspec/release_spec/spec_file"
+require "relspec/release_specs/spec_file"
 
 # Release-spec files from text, as SpecFile reads them from disk.
 module SpecFiles
@@ -86,4 +86,4 @@ module SpecFiles
   end
 end
 
-RSpec.configure { |config| config.include SpecFiles, file_path: %r{spec/unit/release_spec/} }
+RSpec.configure { |config| config.include SpecFiles, file_path: %r{spec/unit/release_specs/} }

@@ -3,7 +3,7 @@
 require "fileutils"
 require "open3"
 require_relative "../error"
-require_relative "../release_spec/values/archive"
+require_relative "../release_specs/values/archive"
 require_relative "../cache_dir"
 require_relative "../temporaries"
 require_relative "emulation"

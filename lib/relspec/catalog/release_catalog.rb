@@ -10,7 +10,7 @@ require_relative "gem_resolution"
 require_relative "archive_import"
 require_relative "../cache_dir"
 require_relative "../display_path"
-require_relative "../release_spec/package_pattern"
+require_relative "../release_specs/package_pattern"
 require_relative "../suggestion"
 
 module Relspec

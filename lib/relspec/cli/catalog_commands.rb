@@ -27,7 +27,7 @@ module Relspec
       option :targets, type: :string, desc: "Distribution codenames, comma separated (default: every built-in one)"
       option :output, aliases: "-o", type: :string, desc: "Write to this file (atomically) instead of stdout"
       def export(workspace)
-        require_relative "../release_spec/distribution"
+        require_relative "../release_specs/distribution"
         require_relative "../catalog/autoproj_source"
         require_relative "../catalog/snapshot_source"
         catalog = Catalog::AutoprojSource.load(workspace, ReleaseSpec::Distributions.builtin(options[:targets]))
@@ -40,7 +40,7 @@ module Relspec
       option :target, type: :string, desc: "Only this distribution codename"
       option :format, enum: %w[text json], default: "text", desc: "Output format"
       def show(path)
-        require_relative "../release_spec"
+        require_relative "../release_specs"
         require_relative "../catalog/release_catalog"
         release = Catalog::ReleaseCatalog.load(ReleaseSpec.resolve(path))
         selections = release.selections_on(options[:target])

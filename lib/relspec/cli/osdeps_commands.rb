@@ -46,7 +46,7 @@ module Relspec
       option :repo_url, type: :string, desc: "Base URL of the releases (default: the one most releases share)"
       option :public_key, type: :string, desc: "URL of the key that signs the releases"
       def index
-        require_relative "../release_spec"
+        require_relative "../release_specs"
         require_relative "../osdeps/release_index"
         require_relative "../osdeps/files"
         require_relative "../project"
@@ -72,7 +72,7 @@ module Relspec
       option :specs, type: :string, default: "specs", desc: "The folder of release specs"
       option :out, type: :string, default: "build/package-set", desc: "The package set's folder"
       def package_set
-        require_relative "../release_spec"
+        require_relative "../release_specs"
         require_relative "../osdeps/package_set"
         require_relative "../osdeps/package_set_writer"
         files = Osdeps::PackageSet.assemble(indexed_releases(spec_library))

@@ -1,7 +1,7 @@
 # frozen_string_literal: true
 
 require "json"
-require_relative "../release_spec"
+require_relative "../release_specs"
 require_relative "friendly_errors"
 
 module Relspec

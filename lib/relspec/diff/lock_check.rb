@@ -1,7 +1,7 @@
 # frozen_string_literal: true
 
 require_relative "../plan"
-require_relative "../release_spec/library"
+require_relative "../release_specs/library"
 require_relative "../project"
 require_relative "../diff"
 

@@ -1,6 +1,6 @@
 # frozen_string_literal: true
 
-require_relative "../release_spec/package_pattern"
+require_relative "../release_specs/package_pattern"
 
 module Relspec
   module Osdeps

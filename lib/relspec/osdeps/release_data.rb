@@ -1,7 +1,7 @@
 # frozen_string_literal: true
 
 require_relative "../yaml/located_document"
-require_relative "../release_spec/names"
+require_relative "../release_specs/names"
 require_relative "../diagnostic"
 require_relative "../error"
 

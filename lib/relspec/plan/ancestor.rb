@@ -2,7 +2,7 @@
 
 require_relative "../apt/repository"
 require_relative "../apt/host_lists"
-require_relative "../release_spec/values/repository_entry"
+require_relative "../release_specs/values/repository_entry"
 
 module Relspec
   module Plan

@@ -2,7 +2,7 @@
 
 require_relative "../debian/control_relations"
 require_relative "../debian/build_input"
-require_relative "../release_spec/values/prefixes"
+require_relative "../release_specs/values/prefixes"
 require_relative "../catalog/prefix_markers"
 
 module Relspec

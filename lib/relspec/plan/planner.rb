@@ -9,7 +9,7 @@ require_relative "../apt/version"
 require_relative "../debian/naming"
 require_relative "../debian/package_version"
 require_relative "../debian/gem_version"
-require_relative "../release_spec/package_pattern"
+require_relative "../release_specs/package_pattern"
 require_relative "../diagnostic"
 require_relative "../error"
 

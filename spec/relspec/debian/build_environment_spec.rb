@@ -4,7 +4,7 @@ require "spec_helper"
 require "open3"
 require "relspec/debian/debian_dir"
 require "relspec/catalog/package"
-require "relspec/release_spec/distribution"
+require "relspec/release_specs/distribution"
 
 # The build environment of debian/rules (docs/compile.md): rules names only
 # the direct dependencies and takes the rest from their installed env.sh.

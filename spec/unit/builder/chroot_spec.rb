@@ -4,7 +4,7 @@ require_relative "../unit_helper"
 require "tmpdir"
 require "relspec/builder/chroot"
 require "relspec/target"
-require "relspec/release_spec/values/archive"
+require "relspec/release_specs/values/archive"
 
 # The chroot tarball's mmdebstrap command, as a Slurm prepare job runs it
 # (Chroot#job_steps), with the mirror from the spec: nothing is run.

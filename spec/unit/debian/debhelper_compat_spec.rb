@@ -3,7 +3,7 @@
 require_relative "../unit_helper"
 require "relspec/debian/debian_dir"
 require "relspec/catalog/package"
-require "relspec/release_spec/distribution"
+require "relspec/release_specs/distribution"
 
 # debian/ for old distributions: the compat level of each distribution's
 # debhelper (docs/compile.md), declared the way that debhelper reads it, and

@@ -8,8 +8,8 @@ require "relspec/plan/inventory"
 require "relspec/plan/target"
 require "relspec/catalog/release_catalog"
 require "relspec/catalog/uncommitted_changes"
-require "relspec/release_spec/effective_spec"
-require "relspec/release_spec/spec_file"
+require "relspec/release_specs/effective"
+require "relspec/release_specs/spec_file"
 
 # The Planner fed in memory: a catalog, the ancestors' indices and the spec's
 # values as plain values; no workspace, repository or network

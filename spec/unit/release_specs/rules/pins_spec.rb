@@ -1,7 +1,7 @@
 # frozen_string_literal: true
 
 require_relative "../../unit_helper"
-require "relspec/release_spec/rules/pins"
+require "relspec/release_specs/rules/pins"
 
 RSpec.describe Relspec::ReleaseSpec::Rules::Pins do
   def check(text)

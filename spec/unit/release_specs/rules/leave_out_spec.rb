@@ -1,7 +1,7 @@
 # frozen_string_literal: true
 
 require_relative "../../unit_helper"
-require "relspec/release_spec/rules/leave_out"
+require "relspec/release_specs/rules/leave_out"
 
 RSpec.describe Relspec::ReleaseSpec::Rules::LeaveOut do
   def check(text)

@@ -1,7 +1,7 @@
 # frozen_string_literal: true
 
 require_relative "../unit_helper"
-require "relspec/release_spec/schema_check"
+require "relspec/release_specs/schema_check"
 
 # The schemas over a located document: each wrong value named with its
 # file:line:column.

@@ -1,7 +1,7 @@
 # frozen_string_literal: true
 
-require_relative "release_spec/library"
-require_relative "release_spec/resolution"
+require_relative "release_specs/library"
+require_relative "release_specs/resolution"
 require_relative "error"
 
 module Relspec

@@ -1,7 +1,7 @@
 # frozen_string_literal: true
 
 require_relative "../../unit_helper"
-require "relspec/release_spec/rules/targets"
+require "relspec/release_specs/rules/targets"
 
 RSpec.describe Relspec::ReleaseSpec::Rules::Targets do
   def check(text)

@@ -1,7 +1,7 @@
 # frozen_string_literal: true
 
 require_relative "../../unit_helper"
-require "relspec/release_spec/rules/settings"
+require "relspec/release_specs/rules/settings"
 
 RSpec.describe Relspec::ReleaseSpec::Rules::Settings do
   def check(text)

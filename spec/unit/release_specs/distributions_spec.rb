@@ -1,6 +1,6 @@
 # frozen_string_literal: true
 
-require "relspec/release_spec/distribution"
+require "relspec/release_specs/distribution"
 
 RSpec.describe Relspec::ReleaseSpec::Distributions do
   describe ".builtin" do

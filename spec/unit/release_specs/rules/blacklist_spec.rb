@@ -1,7 +1,7 @@
 # frozen_string_literal: true
 
 require_relative "../../unit_helper"
-require "relspec/release_spec/rules/blacklist"
+require "relspec/release_specs/rules/blacklist"
 
 RSpec.describe Relspec::ReleaseSpec::Rules::Blacklist do
   def check(text)

@@ -1,6 +1,6 @@
 # frozen_string_literal: true
 
-require_relative "effective_spec"
+require_relative "effective"
 require_relative "origin"
 require_relative "defaults"
 

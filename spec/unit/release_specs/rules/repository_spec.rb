@@ -1,7 +1,7 @@
 # frozen_string_literal: true
 
 require_relative "../../unit_helper"
-require "relspec/release_spec/rules/repository"
+require "relspec/release_specs/rules/repository"
 
 RSpec.describe Relspec::ReleaseSpec::Rules::Repository do
   def check(text)

@@ -1,7 +1,7 @@
 # frozen_string_literal: true
 
 require_relative "../../unit_helper"
-require "relspec/release_spec/rules/release_identity"
+require "relspec/release_specs/rules/release_identity"
 
 RSpec.describe Relspec::ReleaseSpec::Rules::ReleaseIdentity do
   def check(text, name: "child")

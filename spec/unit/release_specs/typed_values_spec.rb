@@ -1,8 +1,8 @@
 # frozen_string_literal: true
 
 require "tmpdir"
-require "relspec/release_spec/effective_spec"
-require "relspec/release_spec/origin"
+require "relspec/release_specs/effective"
+require "relspec/release_specs/origin"
 
 # The effective spec read as typed values: in memory, no file but a temporary
 # folder for the one rule that asks the file system (a local repository path

@@ -1,7 +1,7 @@
 # frozen_string_literal: true
 
 require_relative "../../unit_helper"
-require "relspec/release_spec/rules/externals"
+require "relspec/release_specs/rules/externals"
 
 RSpec.describe Relspec::ReleaseSpec::Rules::Externals do
   def check(text)

@@ -1,7 +1,7 @@
 # frozen_string_literal: true
 
 require_relative "../../unit_helper"
-require "relspec/release_spec/rules/parents"
+require "relspec/release_specs/rules/parents"
 
 RSpec.describe Relspec::ReleaseSpec::Rules::Parents do
   def check(text)
