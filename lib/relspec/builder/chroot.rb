@@ -27,8 +27,11 @@ module Relspec
     # is the host's (archive `host: true`, or no archive at all).
     class Chroot
       # Every package relspec emits build-depends on debhelper: in the
-      # tarball once, rather than installed again by every build.
-      INCLUDE = %w[debhelper].freeze
+      # tarball once, rather than installed again by every build. ccache:
+      # every build with the compiler cache (Ccache) depends on it; in the
+      # tarball, that costs a build nothing (a tarball made without it has
+      # apt install it in each build, which works the same, only slower).
+      INCLUDE = %w[debhelper ccache].freeze
       # the lists kept (see above), dpkg without fsync in every later build
       SPEED = %w[--skip=cleanup/apt/lists --dpkgopt=force-unsafe-io].freeze
       # The first line of every apt source relspec's package set writes
