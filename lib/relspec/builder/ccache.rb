@@ -82,8 +82,8 @@ module Relspec
         @ready = false
       end
 
-      # The lines of sbuild's configuration that use the cache; the folder
-      # is made (or its owner and mode checked) the first time.
+      # The lines of sbuild's configuration that use the cache (#prepare
+      # first).
       def config_lines
         prepare
         ["$unshare_bind_mounts = [ { directory => #{perl(@dir)}, mountpoint => #{perl(MOUNTPOINT)} } ];",
@@ -96,8 +96,8 @@ module Relspec
          "$manual_depends = ['ccache'];"]
       end
 
-      private
-
+      # Makes the folder, or checks its owner and closes it, once: raises
+      # BuildError when it is no folder or belongs to someone else.
       def prepare
         @lock.synchronize do
           next if @ready
@@ -112,6 +112,8 @@ module Relspec
           @ready = true
         end
       end
+
+      private
 
       def check_folder
         return if File.directory?(@dir) && !File.symlink?(@dir)

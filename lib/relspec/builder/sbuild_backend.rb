@@ -51,7 +51,10 @@ module Relspec
       end
 
       # Makes the target's chroot tarball unless it exists; true if it did.
+      # The compiler cache's folder first: a folder relspec must refuse
+      # stops the run before any chroot is made.
       def prepare(target, log:)
+        @ccache&.prepare
         chroot(target).ensure(log)
       end
 
