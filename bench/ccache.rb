@@ -18,7 +18,7 @@
 # root's builds have a ccache). The chroot tarball is relspec's cache's
 # (XDG_CACHE_HOME); the ccache folder is the bench's own.
 #
-#   bundle exec ruby bench/ccache.rb [--select base/types,...] [--change base/types] [--jobs 2] [--keep DIR]
+#   bundle exec ruby bench/ccache.rb [--select base/types,base/numeric] [--change base/types] [--jobs 2] [--keep DIR]
 require "fileutils"
 require "open3"
 require "optparse"
@@ -31,10 +31,16 @@ require_relative "../spec/support/toolchain_release"
 
 EXE = File.expand_path("../exe/relspec", __dir__)
 
-options = { select: %w[base/types], change: "base/types", jobs: 2, keep: nil }
+# base/types and its reverse dependencies that ../shared bundles and the
+# toolchain release builds (base/orogen/types also needs external/sisl)
+DEFAULT_SELECTION = %w[base/types base/numeric].freeze
+
+options = { select: DEFAULT_SELECTION, change: "base/types", jobs: 2, keep: nil }
 OptionParser.new do |parser|
   parser.banner = "usage: bench/ccache.rb [--select a,b] [--change PACKAGE] [--jobs N] [--keep DIR]"
-  parser.on("--select LIST", Array, "the release's selection (default base/types)") { |list| options[:select] = list }
+  parser.on("--select LIST", Array, "the release's selection (default #{DEFAULT_SELECTION.join(',')})") do |list|
+    options[:select] = list
+  end
   parser.on("--change PACKAGE", "the package whose source changes (default base/types)") { |name| options[:change] = name }
   parser.on("--jobs N", Integer) { |jobs| options[:jobs] = jobs }
   parser.on("--keep DIR", "work in DIR and keep it (default: a temporary folder, removed)") { |dir| options[:keep] = dir }
