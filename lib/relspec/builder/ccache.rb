@@ -57,7 +57,9 @@ module Relspec
                             "(its folder must belong to a subordinate uid); set #{VARIABLE}=off"
         end
 
-        new(File.expand_path(dir), owner: [first_subordinate(subuid, user), first_subordinate(subgid, user)])
+        # read when the folder is made: a Slurm submit host builds nothing here
+        # and may have no subordinate ids
+        new(File.expand_path(dir), owner: -> { [first_subordinate(subuid, user), first_subordinate(subgid, user)] })
       end
 
       # The first id of +user+'s range in +file+ (/etc/subuid or
@@ -71,15 +73,21 @@ module Relspec
         raise BuildError, "#{file}: the entry of #{user} is not a number"
       end
 
-      attr_reader :dir, :owner
+      attr_reader :dir
 
       # +dir+: the folder on this machine; +owner+: [uid, gid] the chroot's
-      # build user has on this machine.
+      # build user has on this machine (or a lambda returning them).
       def initialize(dir, owner:)
         @dir = dir
         @owner = owner
         @lock = Mutex.new
         @ready = false
+      end
+
+      # [uid, gid] of the chroot's build user on this machine.
+      def owner
+        @owner = @owner.call if @owner.respond_to?(:call)
+        @owner
       end
 
       # The lines of sbuild's configuration that use the cache (#prepare
@@ -105,7 +113,7 @@ module Relspec
           FileUtils.mkdir_p(File.dirname(@dir), mode: 0o755)
           Dir.mkdir(@dir, 0o700) unless File.exist?(@dir) || File.symlink?(@dir)
           check_folder
-          File.chown(*@owner, @dir) if File.stat(@dir).uid != @owner.first && Dir.empty?(@dir)
+          File.chown(*owner, @dir) if File.stat(@dir).uid != owner.first && Dir.empty?(@dir)
           check_owner
           # nobody but the build user writes (or reads) it
           File.chmod(0o700, @dir)
@@ -123,10 +131,10 @@ module Relspec
 
       def check_owner
         uid = File.stat(@dir).uid
-        return if uid == @owner.first
+        return if uid == owner.first
 
         raise BuildError, "ccache folder #{@dir} belongs to uid #{uid}, not to the uid sbuild's build user has " \
-                          "here (#{@owner.first}): chown -R #{@owner.join(':')} it, or remove it"
+                          "here (#{owner.first}): chown -R #{owner.join(':')} it, or remove it"
       end
 
       # A Perl single-quoted string.

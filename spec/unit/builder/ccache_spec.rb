@@ -35,11 +35,11 @@ RSpec.describe Relspec::Builder::Ccache do
       .to raise_error(Relspec::BuildError, 'RELSPEC_CCACHE=cc: not an absolute folder (or "off")')
     expect { from({ "RELSPEC_CCACHE" => "/cc" }, uid: 1000, user: "alice") }
       .to raise_error(Relspec::BuildError, /needs relspec to run as root .* set RELSPEC_CCACHE=off\z/)
-    expect { from({}, user: "nobody") }
+    expect { from({}, user: "nobody").owner }
       .to raise_error(Relspec::BuildError, "no subordinate ids of nobody in #{@dir}/subuid, which sbuild's " \
                                            "unshare mode needs")
     File.write(File.join(@dir, "subgid"), "root:x:1\n")
-    expect { from({}) }.to raise_error(Relspec::BuildError, "#{@dir}/subgid: the entry of root is not a number")
+    expect { from({}).owner }.to raise_error(Relspec::BuildError, "#{@dir}/subgid: the entry of root is not a number")
   end
 
   it "makes the folder closed to all but the build user and says sbuild's lines for it" do
