@@ -20,8 +20,10 @@ require_relative "support/git_project"
 require_relative "support/diff_project"
 require_relative "support/large_locks"
 
-# In-process runs cache like CLI runs do: in a folder of the test run.
+# In-process runs cache like CLI runs do: in a folder of the test run
+# (and so do the sbuild builds' compiler cache, and what the tests spawn).
 ENV["XDG_CACHE_HOME"] = CliRunner::CACHE
+ENV.update(CliRunner::CCACHE_ENV)
 
 RSpec.configure do |config|
   config.expect_with(:rspec) { |c| c.syntax = :expect }

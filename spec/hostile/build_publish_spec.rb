@@ -480,4 +480,24 @@ RSpec.describe "relspec build and publish under concurrency and faults", order: 
   ensure
     FileUtils.rm_rf(File.dirname(outside))
   end
+  it "case 6: refuses a ccache folder that is relative, a link or someone else's, before any build" do
+    outside = Dir.mktmpdir("relspec-outside")
+    File.write(File.join(outside, "precious.o"), "mine\n")
+    link = File.join(@dir, "ccache-link")
+    File.symlink(outside, link)
+    {
+      "cache" => "RELSPEC_CCACHE=cache: not an absolute folder (or \"off\")",
+      link => "ccache folder #{link} is not a folder (RELSPEC_CCACHE chooses another, \"off\" none)",
+      outside => "ccache folder #{outside} belongs to uid #{Process.uid}, not to the uid sbuild's build user has " \
+                 "here (#{File.read('/etc/subuid')[/^root:(\d+):/, 1]}): chown -R "
+    }.each do |folder, message|
+      run = relspec("build", spec, "--out", "out", "--backend", "sbuild", "--rebuild", chdir: @dir,
+                                                                                       env: { "RELSPEC_CCACHE" => folder })
+      expect([run.exit_code, run.stdout]).to eq([1, ""])
+      expect(run.stderr).to start_with("relspec: error: #{message}")
+    end
+    expect([Dir.children(outside), File.stat(outside).uid]).to eq([["precious.o"], Process.uid])
+  ensure
+    FileUtils.rm_rf(outside)
+  end
 end

@@ -50,6 +50,13 @@ module CliRunner
   # Caches go to a folder of the test run, never to the user's.
   CACHE = Dir.mktmpdir("relspec-test-cache")
   at_exit { FileUtils.rm_rf(CACHE) }
+  # The sbuild builds' compiler cache (RELSPEC_CCACHE), of the test run
+  # too. Not in CACHE: its folder is closed (0700), and the chroot's build
+  # user, a subordinate uid, must reach the cache (relspec makes it its own).
+  # Only root's builds have one (Relspec::Builder::Ccache).
+  CCACHE = File.join(Dir.mktmpdir("relspec-test-ccache").tap { |dir| File.chmod(0o755, dir) }, "ccache")
+  at_exit { FileUtils.rm_rf(File.dirname(CCACHE)) }
+  CCACHE_ENV = Process.uid.zero? ? { "RELSPEC_CCACHE" => CCACHE } : {}
 
   # +env+: more environment variables; +umask+: the child's umask. Runs in
   # a child of the preloaded relspec where that is the same as a process
@@ -122,7 +129,7 @@ module CliRunner
   end
 
   def child_environment(env)
-    { "XDG_CACHE_HOME" => CACHE }.merge(env)
+    { "XDG_CACHE_HOME" => CACHE, **CCACHE_ENV }.merge(env)
   end
 
   def spawned_relspecs

@@ -27,10 +27,17 @@ module Relspec
     # is the host's (archive `host: true`, or no archive at all).
     class Chroot
       # Every package relspec emits build-depends on debhelper: in the
-      # tarball once, rather than installed again by every build.
-      INCLUDE = %w[debhelper].freeze
+      # tarball once, rather than installed again by every build. ccache:
+      # every build with the compiler cache (Ccache) depends on it; in the
+      # tarball, that costs a build nothing (a tarball made without it has
+      # apt install it in each build, which works the same, only slower).
+      INCLUDE = %w[debhelper ccache].freeze
       # the lists kept (see above), dpkg without fsync in every later build
       SPEED = %w[--skip=cleanup/apt/lists --dpkgopt=force-unsafe-io].freeze
+      # ccache's compiler links (/usr/lib/ccache) made again once everything
+      # is installed: its postinst ran before the compilers' alternatives
+      # existed, and without its `c++` and `cc` CMake finds /usr/bin/c++
+      HOOKS = %w[--chrooted-customize-hook=update-ccache-symlinks].freeze
       # The first line of every apt source relspec's package set writes
       # (Osdeps::PackageSet's init.rb).
       PACKAGE_SET_SOURCE = "# written by relspec's autoproj package set"
@@ -109,7 +116,7 @@ module Relspec
 
       def command(partial, mirrors)
         ["mmdebstrap", "--variant=buildd", "--mode=unshare", "--arch=#{@target.arch}", "--include=#{INCLUDE.join(',')}",
-         *SPEED, *components_option, @target.codename, partial, *mirrors]
+         *SPEED, *HOOKS, *components_option, @target.codename, partial, *mirrors]
       end
 
       def archive

@@ -2,6 +2,7 @@
 
 require "fileutils"
 require "tmpdir"
+require_relative "ccache"
 require_relative "chroot"
 require_relative "../error"
 require_relative "produced_files"
@@ -28,12 +29,15 @@ module Relspec
       # +distributions+: codename => ReleaseSpec::Distribution; +chroot_cache+: the
       # folder of chroot tarballs (default: relspec's cache); +unpack_dir+:
       # where each build's chroot is unpacked (UnpackDir: tmpfs when there
-      # is room).
-      def initialize(tool, distributions, chroot_cache: nil, unpack_dir: UnpackDir.new)
+      # is room); +ccache+: the compiler cache bound into each build's
+      # chroot (Ccache), nil for none.
+      def initialize(tool, distributions, chroot_cache: nil, unpack_dir: UnpackDir.new,
+                     ccache: Ccache.from_environment)
         @tool = tool
         @distributions = distributions
         @chroot_cache = chroot_cache
         @unpack_dir = unpack_dir
+        @ccache = ccache
         @chroots = {}
       end
 
@@ -47,14 +51,18 @@ module Relspec
       end
 
       # Makes the target's chroot tarball unless it exists; true if it did.
+      # The compiler cache's folder first: a folder relspec must refuse
+      # stops the run before any chroot is made.
       def prepare(target, log:)
+        @ccache&.prepare
         chroot(target).ensure(log)
       end
 
       def build(request)
         prepare(request.target, log: request.log)
         Dir.mktmpdir("relspec-sbuild") do |work|
-          environment = @unpack_dir.environment
+          # in a Slurm job (#job_steps) neither: its nodes have other folders
+          environment = @unpack_dir.environment(@ccache ? @ccache.config_lines : [])
           @tool.run(request.source, command(request, work), log: request.log, chdir: work, env: environment)
           ProducedFiles.collect(work, request.output_dir)
         end

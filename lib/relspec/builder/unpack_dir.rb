@@ -2,6 +2,7 @@
 
 require "fileutils"
 require "open3"
+require "tmpdir"
 require_relative "../temporaries"
 
 module Relspec
@@ -48,11 +49,13 @@ module Relspec
 
       # The environment of one sbuild run: SBUILD_CONFIG naming a file that
       # puts the chroot on tmpfs, or nothing (sbuild's default) when tmpfs
-      # or memory is short now.
-      def environment
-        return {} unless room?
+      # or memory is short now. +extra+: more lines of that file (Ccache's),
+      # written also when the chroot goes to disk.
+      def environment(extra = [])
+        on_tmpfs = room?
+        return {} if !on_tmpfs && extra.empty?
 
-        { "SBUILD_CONFIG" => config }
+        { "SBUILD_CONFIG" => config(on_tmpfs, extra) }
       end
 
       # Removes this process's folder (the chroots of finished builds are
@@ -75,20 +78,30 @@ module Relspec
 
       private
 
-      # The config file in this process's folder, written once.
-      def config
+      # The config file in this process's folder, written once per content
+      # (a build's chroot goes to tmpfs or not as the room is at its start).
+      def config(on_tmpfs, extra)
         @lock.synchronize do
-          @root ||= begin
-            Temporaries.sweep(@shm)
-            root = Temporaries.path(@shm, "sbuild")
-            # sbuild's namespace root (a subordinate uid) makes the chroot
-            # folder inside and must reach it
-            FileUtils.mkdir(root, mode: 0o755)
-            File.write(File.join(root, "sbuild.conf"), "$unshare_tmpdir_template = '#{root}/chroot.XXXXXXXXXX';\n1;\n")
-            root
-          end
-          File.join(@root, "sbuild.conf")
+          @root ||= make_root
+          lines = on_tmpfs ? ["$unshare_tmpdir_template = '#{@root}/chroot.XXXXXXXXXX';"] : []
+          text = [*lines, *extra, "1;"].join("\n") << "\n"
+          path = File.join(@root, on_tmpfs ? "sbuild.conf" : "sbuild-disk.conf")
+          File.write(path, text) unless File.file?(path) && File.read(path) == text
+          path
         end
+      end
+
+      # This process's folder: on tmpfs, else (no tmpfs to write to, but
+      # lines to say) a temporary folder of its own.
+      def make_root
+        return Dir.mktmpdir("relspec-sbuild") unless File.directory?(@shm) && File.writable?(@shm)
+
+        Temporaries.sweep(@shm)
+        root = Temporaries.path(@shm, "sbuild")
+        # sbuild's namespace root (a subordinate uid) makes the chroot
+        # folder inside and must reach it
+        FileUtils.mkdir(root, mode: 0o755)
+        root
       end
 
       def available_memory

@@ -53,7 +53,9 @@ module Relspec
         source packages, a package as soon as its build-dependencies are built, up to
         --jobs at once. Results (status, version, duration, log, files with SHA256) go
         to build-results.yml in the target folder after every package; a killed run is
-        resumed by the next one. See docs/build.md.
+        resumed by the next one. sbuild's C and C++ compiles go through ccache when
+        relspec runs as root (/var/cache/relspec/ccache; RELSPEC_CCACHE=DIR chooses
+        another folder, RELSPEC_CCACHE=off none). See docs/build.md.
       TEXT
 
       CHECK = <<~TEXT

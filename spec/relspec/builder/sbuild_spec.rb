@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require "spec_helper"
+require "open3"
 require "yaml"
 require_relative "../../support/build_release"
 
@@ -16,6 +17,11 @@ require_relative "../../support/build_release"
 # closure (issue 32; base/one's Depends leave pkg-config out). The module
 # also finds Ruby's headers as base/cmake's RockRuby does: autoproj installs
 # them for itself in every workspace, so every CMake build gets ruby-dev.
+#
+# Both compile the same C++ file in folders of other names (sbuild's
+# /build/<source>-<random>/<source>-<version>, as a rebuild after a
+# blacklist or pin change does): base/two's compile is a hit of the test
+# run's ccache (CliRunner::CCACHE), bound into the chroot (root only).
 RSpec.describe "relspec build --backend sbuild", order: :defined do
   before(:all) do
     @dir = Dir.mktmpdir("relspec-build-sbuild")
@@ -23,13 +29,23 @@ RSpec.describe "relspec build --backend sbuild", order: :defined do
     @cache = CliRunner::CACHE
     @release = BuildRelease.new(@dir, "sb")
     @release.osdeps("pkg-config:\n  debian: pkg-config\n")
-    @release.package("base/one", cmake: "install(FILES one-config.cmake DESTINATION share/cmake/one)",
-                                 osdeps: ["pkg-config"], files: { "one-config.cmake" => "find_package(PkgConfig REQUIRED)\nenable_language(C)\nfind_package(Ruby REQUIRED)\n" })
-    @release.package("base/two", dependencies: ["base/one"], cmake: "find_package(one REQUIRED)")
+    hello = "enable_language(CXX)\nadd_executable(hello hello.cpp)"
+    cpp = { "hello.cpp" => "#include <string>\nint main() { return std::string(\"hello\").size() == 5 ? 0 : 1; }\n" }
+    @release.package("base/one", cmake: "install(FILES one-config.cmake DESTINATION share/cmake/one)\n#{hello}",
+                                 osdeps: ["pkg-config"], files: { "one-config.cmake" => "find_package(PkgConfig REQUIRED)\nfind_package(Ruby REQUIRED)\n" }.merge(cpp))
+    # the language first: FindRuby finds no library in a project without one
+    @release.package("base/two", dependencies: ["base/one"], cmake: "#{hello}\nfind_package(one REQUIRED)", files: cpp)
     @release.compile
   end
 
   after(:all) { FileUtils.rm_rf(@dir) }
+
+  # ccache's counters in the test run's cache folder (ccache of this machine).
+  def ccache_stats
+    output, status = Open3.capture2("ccache", "--dir", CliRunner::CCACHE, "--print-stats")
+    expect(status).to be_success
+    output.lines.to_h { |line| line.split("\t").then { |name, value| [name, value.to_i] } }
+  end
 
   def build(*args)
     relspec("build", "specs/sb.yml", "--out", "out", "--backend", "sbuild", *args, chdir: @dir)
@@ -52,6 +68,16 @@ RSpec.describe "relspec build --backend sbuild", order: :defined do
     expect(two).to include("Found PkgConfig: /usr/bin/pkg-config")
     expect(two).to match(/Unpacking ruby-dev:amd64 /)
     expect(two).to match(/Found Ruby: .*ruby/)
+
+    # ccache: on the build's PATH, its folder bound in; base/one's compile
+    # missed, base/two's hit. The folder belongs to the chroot's build user
+    # (root's first subordinate uid) and nobody else.
+    expect(two).to include("PATH=/usr/lib/ccache:", "CCACHE_DIR=/var/cache/ccache")
+    stats = ccache_stats
+    expect(stats.fetch("cache_miss")).to be >= 1
+    expect(stats.fetch("direct_cache_hit") + stats.fetch("preprocessed_cache_hit")).to be >= 1
+    folder = File.stat(CliRunner::CCACHE)
+    expect([folder.uid, folder.mode & 0o777]).to eq([File.read("/etc/subuid")[/^root:(\d+):/, 1].to_i, 0o700])
 
     mtime = File.mtime(chroot)
     again = build("--prepare")

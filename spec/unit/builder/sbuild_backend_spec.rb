@@ -16,14 +16,22 @@ RSpec.describe Relspec::Builder::SbuildBackend do
     end
   end
 
-  it "runs sbuild with the environment of where the chroot is unpacked" do
+  it "runs sbuild with the environment of where the chroot is unpacked and of the compiler cache" do
     Dir.mktmpdir do |dir|
       cache = File.join(dir, "chroots")
       FileUtils.mkdir_p(cache)
       File.write(File.join(cache, "bookworm-amd64.tar.zst"), "")
       tool = recorder.new([])
-      unpack = Struct.new(:environment).new({ "SBUILD_CONFIG" => "/dev/shm/x/sbuild.conf" })
-      backend = described_class.new(tool, {}, chroot_cache: cache, unpack_dir: unpack)
+      unpack = Class.new do
+        attr_reader :extra
+
+        def environment(extra)
+          @extra = extra
+          { "SBUILD_CONFIG" => "/dev/shm/x/sbuild.conf" }
+        end
+      end.new
+      ccache = Relspec::Builder::Ccache.new(File.join(dir, "ccache"), owner: [Process.uid, Process.gid])
+      backend = described_class.new(tool, {}, chroot_cache: cache, unpack_dir: unpack, ccache: ccache)
       request = Relspec::Builder::Request.new(source: "rock-r-a", version: "1.0-1", dsc: "/in/rock-r-a_1.0-1.dsc",
                                               target: Relspec::Target.new("bookworm", "amd64"), repositories: [],
                                               local_debs: [], output_dir: File.join(dir, "out"), log: File.join(dir, "log"))
@@ -32,6 +40,9 @@ RSpec.describe Relspec::Builder::SbuildBackend do
       run = tool.runs.fetch(0)
       expect(run[:env]).to eq("SBUILD_CONFIG" => "/dev/shm/x/sbuild.conf")
       expect(run[:command]).to include("sbuild", "--chroot-mode=unshare", "/in/rock-r-a_1.0-1.dsc")
+      # the compiler cache's lines go into that file, not onto the command line
+      expect(unpack.extra).to eq(ccache.config_lines)
+      expect(run[:command].join(" ")).not_to include("ccache")
     end
   end
 end

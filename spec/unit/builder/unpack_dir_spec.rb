@@ -40,6 +40,30 @@ RSpec.describe Relspec::Builder::UnpackDir do
     expect(Dir.children(@shm)).to eq([])
   end
 
+  it "adds more lines (ccache's) to the file, also when the chroot goes to disk" do
+    extra = ["$path = '/usr/lib/ccache:/usr/bin';"]
+    tmpfs = unpack_dir(available_kib: 2 * 1024 * 1024, free: 2 * (1024**3))
+    config = tmpfs.environment(extra).fetch("SBUILD_CONFIG")
+    root = File.dirname(config)
+    expect(File.read(config)).to eq("$unshare_tmpdir_template = '#{root}/chroot.XXXXXXXXXX';\n#{extra.first}\n1;\n")
+    tmpfs.close
+    disk = unpack_dir(available_kib: 512 * 1024, free: 2 * (1024**3))
+    config = disk.environment(extra).fetch("SBUILD_CONFIG")
+    expect(File.read(config)).to eq("#{extra.first}\n1;\n")
+    expect(File.dirname(config, 2)).to eq(@shm)
+    disk.close
+    expect(Dir.children(@shm)).to eq([])
+  end
+
+  it "writes the lines to a folder of its own where there is no tmpfs" do
+    FileUtils.rm_rf(@shm)
+    dir = unpack_dir(available_kib: 2 * 1024 * 1024, free: 2 * (1024**3))
+    config = dir.environment(["1;"]).fetch("SBUILD_CONFIG")
+    expect(File.read(config)).to eq("1;\n1;\n")
+    dir.close
+    expect(File.exist?(config)).to be(false)
+  end
+
   it "removes what a killed relspec left there before making its own folder" do
     left = File.join(@shm, ".sbuild.relspec-999999999-1-0123abcd")
     FileUtils.mkdir_p(File.join(left, "chroot.AAAA", "usr"))
