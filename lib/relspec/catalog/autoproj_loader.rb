@@ -13,6 +13,7 @@ require_relative "autoproj_messages"
 require_relative "copyright_holders"
 require_relative "package_environment"
 require_relative "orogen_arguments"
+require_relative "ruby_extension"
 require_relative "cmake_defines"
 require_relative "prefix_markers"
 require_relative "import_patch"
@@ -299,7 +300,8 @@ module Relspec
           "checked_out" => definition.checked_out?, "dependencies" => autobuild.dependencies.sort,
           "optional_dependencies" => optional_packages.sort, "defines" => CmakeDefines.of(autobuild, root_dir: ws.root_dir, markers: markers),
           "environment" => PackageEnvironment.of(autobuild, root_dir: ws.root_dir, markers: markers),
-          "orogen_arguments" => OrogenArguments.of(autobuild), "patches" => ImportPatch.list_of(autobuild.importer) { |path| relative(ws, path) }
+          "orogen_arguments" => OrogenArguments.of(autobuild), "extension_task" => RubyExtension.setup_task(autobuild),
+          "patches" => ImportPatch.list_of(autobuild.importer) { |path| relative(ws, path) }
         }.compact.merge(manifest_data(ws, autobuild.description))
       end
 

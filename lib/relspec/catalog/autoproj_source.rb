@@ -112,6 +112,7 @@ module Relspec
             maintainer: entry["maintainer"], copyright: entry["copyright"], dependencies: entry["dependencies"],
             optional_dependencies: entry["optional_dependencies"], defines: entry["defines"],
             environment: entry["environment"], orogen_arguments: entry["orogen_arguments"],
+            extension_task: entry["extension_task"],
             patches: entry.fetch("patches", []).map { |patch| ImportPatch.from_h(patch) },
             os_dependencies: entry["os_dependencies"].transform_values { |deps| OsDependencies.from_h(deps) }
           )

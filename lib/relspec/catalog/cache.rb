@@ -79,7 +79,7 @@ module Relspec
       # Changes to relspec's reading code make old entries useless.
       def loader_version
         @loader_version ||= Digest::SHA256.hexdigest(
-          %w[autoproj_loader.rb autoproj_source.rb package.rb package_environment.rb orogen_arguments.rb cmake_defines.rb prefix_markers.rb
+          %w[autoproj_loader.rb autoproj_source.rb package.rb package_environment.rb orogen_arguments.rb ruby_extension.rb cmake_defines.rb prefix_markers.rb
              snapshot_source.rb import_patch.rb os_dependencies.rb autoproj_osdeps.rb
              ../catalog.rb].map { |f| File.read(File.join(__dir__, f)) }.join
         )

@@ -16,14 +16,14 @@ module Relspec
 
       FIELDS = %i[name package_set build_type vcs commit_time version summary description license maintainer
                   copyright source_dir checked_out dependencies optional_dependencies os_dependencies defines
-                  environment orogen_arguments patches].freeze
+                  environment orogen_arguments extension_task patches].freeze
 
       attr_reader(*FIELDS)
 
       def initialize(name:, package_set:, build_type:, vcs:, commit_time:, source_dir:, checked_out: true, version: nil,
                      summary: nil, description: nil, license: nil, maintainer: nil, copyright: [], dependencies: [],
                      optional_dependencies: [], os_dependencies: {}, defines: {}, environment: [],
-                     orogen_arguments: [], patches: [])
+                     orogen_arguments: [], extension_task: nil, patches: [])
         @name = name
         @package_set = package_set
         @build_type = build_type
@@ -50,6 +50,9 @@ module Relspec
         # an oroGen package's generator words, as autoproj gives them
         # (Catalog::OrogenArguments); empty for other build types
         @orogen_arguments = (orogen_arguments || []).dup.freeze
+        # a Ruby package's rake task that compiles its C extension
+        # (Catalog::RubyExtension); nil for other packages
+        @extension_task = extension_task&.dup.freeze
         # the package set's import patches (ImportPatch), in the order autoproj applies them
         @patches = (patches || []).map { |patch| patch.is_a?(ImportPatch) ? patch.freeze : ImportPatch.from_h(patch) }.freeze
         freeze
@@ -83,7 +86,8 @@ module Relspec
           "checked_out" => checked_out ? nil : false,
           "dependencies" => dependencies, "optional_dependencies" => optional_dependencies,
           "os_dependencies" => os_dependencies.transform_values(&:to_h), "defines" => defines,
-          "environment" => environment, "orogen_arguments" => orogen_arguments, "patches" => patches.map(&:to_h)
+          "environment" => environment, "orogen_arguments" => orogen_arguments, "extension_task" => extension_task,
+          "patches" => patches.map(&:to_h)
         }.reject { |_key, value| value.nil? || value == [] || value == {} }
       end
 
@@ -97,7 +101,7 @@ module Relspec
           optional_dependencies: hash.fetch("optional_dependencies", []),
           os_dependencies: hash.fetch("os_dependencies", {}).transform_values { |deps| OsDependencies.from_h(deps) },
           defines: hash.fetch("defines", {}), environment: hash.fetch("environment", []),
-          orogen_arguments: hash.fetch("orogen_arguments", []),
+          orogen_arguments: hash.fetch("orogen_arguments", []), extension_task: hash["extension_task"],
           patches: hash.fetch("patches", []).map { |patch| ImportPatch.from_h(patch) }
         )
       end

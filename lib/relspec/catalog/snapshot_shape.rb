@@ -17,7 +17,7 @@ module Relspec
       BOOLEAN = ->(value) { [true, false].include?(value) }
 
       PACKAGE_TEXT = %w[package_set build_type commit_time version summary description license maintainer
-                        source_dir].freeze
+                        source_dir extension_task].freeze
 
       module_function
 

@@ -10,6 +10,7 @@ require_relative "environment_file"
 require_relative "../osdeps/trust"
 require_relative "../yaml/writer"
 require_relative "../catalog/prefix_markers"
+require_relative "../catalog/ruby_extension"
 
 module Relspec
   module Debian
@@ -74,7 +75,7 @@ module Relspec
                            :synopsis, :long_description, :codename, :release, :package_name, :vcs_url, :vcs_ref,
                            :commit, :date, :copyright_holders, :license, :license_name, :common_license, :public_source, :build_type, :install_dir, :dh_options,
                            :canonical, :dependency_dirs, :gem_dir, :cmake_options, :orogen_command, :guard, :gem_file, :version,
-                           :body, :ruby_lib_dirs, :package_environment, keyword_init: true)
+                           :body, :ruby_lib_dirs, :package_environment, :extension_task, keyword_init: true)
 
       # Each template becomes a method of Context, compiled once: evaluating
       # ERB source on every render (result_with_hash) cost a no-op compile of
@@ -105,7 +106,7 @@ module Relspec
           canonical: Naming.canonical(package.name), dependency_dirs: dependency_dirs,
           gem_dir: GEM_DIR, cmake_options: cmake_options, orogen_command: orogen_command,
           guard: "RELSPEC_ENV_#{source.gsub(/[^A-Za-z0-9]/, '_')}", gem_file: gem_file, ruby_lib_dirs: ruby_lib_dirs,
-          package_environment: package_environment
+          package_environment: package_environment, extension_task: Catalog::RubyExtension.checked(package)
         }
       end
 
@@ -218,9 +219,11 @@ module Relspec
         kind == "archive" ? "import" : kind
       end
 
-      # A gem is architecture-dependent only when it compiles an extension.
+      # A gem or a Ruby package is architecture-dependent only when it
+      # compiles an extension.
       def architecture
         return @in.gem.native? ? "any" : "all" if @in.package.build_type == "gem"
+        return "any" if @in.package.extension_task
 
         ARCH_INDEPENDENT.include?(@in.package.build_type) ? "all" : "any"
       end
@@ -235,7 +238,8 @@ module Relspec
       end
 
       def build_depends
-        ControlRelations.build_depends(@in.package.build_type, own_relations, os_relations + autoreconf,
+        ControlRelations.build_depends(@in.package.build_type, own_relations,
+                                       os_relations + autoreconf + (@in.package.extension_task ? ["ruby-dev"] : []),
                                        debhelper: debhelper, closure: @in.closure_tools)
       end
 

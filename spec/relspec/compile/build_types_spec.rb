@@ -30,6 +30,24 @@ RSpec.describe "compiling Ruby gemspec and oroGen packages" do
     end
   RUBY
 
+  # as tools/orocos.rb's: a C extension that autoproj's setup task (rake
+  # default) compiles into lib/, which .gitignore hides from the gemspec's list
+  EXT_FILES = {
+    "extlib.gemspec" => TOOL_GEMSPEC.sub('"gentool"', '"extlib"').sub('"1.3.0"', '"0.1.0"'),
+    ".gitignore" => "*.so\n*.o\next/extlib/Makefile\n",
+    "Rakefile" => <<~RUBY,
+      task :default do
+        sh "cd ext/extlib && ruby extconf.rb && make"
+        mkdir_p "lib/extlib"
+        cp "ext/extlib/extlib.so", "lib/extlib/extlib.so"
+      end
+    RUBY
+    "ext/extlib/extconf.rb" => "require 'mkmf'\ncreate_makefile('extlib')\n",
+    "ext/extlib/extlib.c" => "#include <ruby.h>\nstatic VALUE answer(VALUE self) { return INT2NUM(42); }\n" \
+                            "void Init_extlib(void) { rb_define_global_function(\"extlib_answer\", answer, 0); }\n",
+    "lib/extlib.rb" => "require 'extlib/extlib'\n"
+  }.freeze
+
   # A stand-in for oroGen's generator: oroGen itself (and the Orocos
   # toolchain it needs) cannot be installed on this machine, so this script
   # does what debian/rules relies on: it generates a CMake project in the
@@ -56,7 +74,8 @@ RSpec.describe "compiling Ruby gemspec and oroGen packages" do
                                               "bin/gentool" => "#!/usr/bin/env ruby\nrequire 'gentool'\nputs Gentool::ANSWER\n" })
     builder.package("drivers/orogen/camera", type: :orogen, date: "2020-03-02T00:00:00Z",
                                              files: { "camera.orogen" => "name \"camera\"\n" })
-    builder.layout("tools/rubylib", "tools/gentool", "drivers/orogen/camera")
+    builder.package("tools/extlib", type: :ruby, date: "2020-03-01T00:00:00Z", version: "0.1", files: EXT_FILES)
+    builder.layout("tools/rubylib", "tools/gentool", "tools/extlib", "drivers/orogen/camera")
     builder.create
     FileUtils.mkdir_p(File.join(@dir, "specs"))
     File.write(File.join(@dir, "specs", "types.yml"), "release: types\nworkspace: ../ws/workspace\n" \
@@ -114,6 +133,19 @@ RSpec.describe "compiling Ruby gemspec and oroGen packages" do
       env = File.read(File.join(prefix, "env.sh")).gsub("/opt/rock/types", File.join(root, "opt/rock/types"))
       File.write(File.join(work, "env.sh"), env)
       output, status = Open3.capture2e("sh", "-c", ". ./env.sh && gentool", chdir: work)
+      expect([output, status.success?]).to eq(["42\n", true])
+    end
+  end
+
+  it "compiles a Ruby package's C extension with autoproj's setup task and ships it" do
+    Dir.mktmpdir("relspec-ruby-ext") do |work|
+      deb = build("rock-types-ruby-tools-extlib", work)
+      expect(File.basename(deb)).to end_with("_amd64.deb")
+      root = File.join(work, "root")
+      system("dpkg-deb", "-x", deb, root, exception: true)
+      lib = File.join(root, "opt/rock/types/rock-types-ruby-tools-extlib/gems/gems/extlib-0.1.0/lib")
+      expect(File.file?(File.join(lib, "extlib", "extlib.so"))).to be(true)
+      output, status = Open3.capture2e(RbConfig.ruby, "-I", lib, "-e", 'require "extlib"; puts extlib_answer')
       expect([output, status.success?]).to eq(["42\n", true])
     end
   end
