@@ -75,7 +75,7 @@ module Relspec
                            :synopsis, :long_description, :codename, :release, :package_name, :vcs_url, :vcs_ref,
                            :commit, :date, :copyright_holders, :license, :license_name, :common_license, :public_source, :build_type, :install_dir, :dh_options,
                            :canonical, :dependency_dirs, :gem_dir, :cmake_options, :orogen_command, :guard, :gem_file, :version,
-                           :body, :ruby_lib_dirs, :package_environment, :extension_task, keyword_init: true)
+                           :body, :ruby_lib_dirs, :package_environment, :extension_task, :closure_environment, keyword_init: true)
 
       # Each template becomes a method of Context, compiled once: evaluating
       # ERB source on every render (result_with_hash) cost a no-op compile of
@@ -103,7 +103,7 @@ module Relspec
           common_license: LicenseName.common_license_file(LicenseName.of(license_text)),
           public_source: public_url(package.vcs.url.to_s),
           build_type: package.build_type, install_dir: install_dir, dh_options: dh_options(package.build_type),
-          canonical: Naming.canonical(package.name), dependency_dirs: dependency_dirs,
+          canonical: Naming.canonical(package.name), dependency_dirs: dependency_dirs, closure_environment: @in.closure_environment.select { |name| BuildInput.variable?(name) },
           gem_dir: GEM_DIR, cmake_options: cmake_options, orogen_command: orogen_command,
           guard: "RELSPEC_ENV_#{source.gsub(/[^A-Za-z0-9]/, '_')}", gem_file: gem_file, ruby_lib_dirs: ruby_lib_dirs,
           package_environment: package_environment, extension_task: Catalog::RubyExtension.checked(package)

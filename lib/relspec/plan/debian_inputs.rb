@@ -21,8 +21,9 @@ module Relspec
         # install folders by where a package comes from: every dependent
         # asks, so computed once
         @install_dirs = {}
-        # build-only tools of a package's closure, by codename and name
-        @closure_tools = {}
+        # what a package's closure gives its build (tools, environment
+        # variables), by kind, target and name
+        @closure = {}
       end
 
       # +decisions+: the target's decisions, those of dependencies settled.
@@ -38,6 +39,7 @@ module Relspec
           gems: Debian::ControlRelations.distribution_gems(os, @release_catalog.gems.keys),
           gem: @release_catalog.gems[package.name],
           closure_tools: closure_tools(package, target, decisions),
+          closure_environment: closure_environment(package, target, decisions),
           prefixes: prefixes_of(package, decisions)
         )
       end
@@ -73,17 +75,37 @@ module Relspec
       # what autoproj would have installed before building it, that the
       # dependencies' Depends do not bring. The distribution's own packages
       # (system decisions) bring what they need themselves.
-      def closure_tools(package, target, decisions, visiting = {})
+      def closure_tools(package, target, decisions)
+        closure(:tools, package, target, decisions) do |dependency|
+          apt = dependency.os_dependencies_for(target.codename).apt
+          Debian::ControlRelations.build_only(dependency.build_type, apt)
+        end
+      end
+
+      # The variables the package sets' environment settings of +package+'s
+      # closure name (Catalog::Package#environment), sorted: the
+      # dependencies' env.sh export them, and the build takes them as
+      # autoproj's build would (rock.core's OROGEN_PLUGIN_PATH, where oroGen
+      # finds tools/orogen_metadata's plugin that --extensions=metadata_support
+      # asks for).
+      def closure_environment(package, target, decisions)
+        closure(:environment, package, target, decisions) do |dependency|
+          dependency.environment.map { |op| op.fetch("name") }.select { |name| Debian::BuildInput.variable?(name) }
+        end
+      end
+
+      # What +own+ gives each release package of +package+'s dependency
+      # closure on the target, once each, sorted; computed once per package.
+      def closure(kind, package, target, decisions, visiting = {}, &own)
         dependency_names(package, decisions).reject { |name| decisions[name].system? }.flat_map do |name|
-          key = [target.to_s, name]
-          @closure_tools.fetch(key) do
+          key = [kind, target.to_s, name]
+          @closure.fetch(key) do
             next [] if visiting[name] || !@release_catalog.catalog.package?(name)
 
             visiting[name] = true
             dependency = @release_catalog.catalog.package(name)
-            apt = dependency.os_dependencies_for(target.codename).apt
-            own = Debian::ControlRelations.build_only(dependency.build_type, apt)
-            @closure_tools[key] = (own + closure_tools(dependency, target, decisions, visiting)).uniq.sort.freeze
+            @closure[key] = (own.call(dependency) + closure(kind, dependency, target, decisions, visiting, &own))
+                            .uniq.sort.freeze
           end
         end.uniq.sort
       end

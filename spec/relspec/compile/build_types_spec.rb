@@ -44,7 +44,7 @@ RSpec.describe "compiling Ruby gemspec and oroGen packages" do
     RUBY
     "ext/extlib/extconf.rb" => "require 'mkmf'\ncreate_makefile('extlib')\n",
     "ext/extlib/extlib.c" => "#include <ruby.h>\nstatic VALUE answer(VALUE self) { return INT2NUM(42); }\n" \
-                            "void Init_extlib(void) { rb_define_global_function(\"extlib_answer\", answer, 0); }\n",
+                             "void Init_extlib(void) { rb_define_global_function(\"extlib_answer\", answer, 0); }\n",
     "lib/extlib.rb" => "require 'extlib/extlib'\n"
   }.freeze
 

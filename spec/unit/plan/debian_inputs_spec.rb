@@ -18,6 +18,13 @@ RSpec.describe Relspec::Plan::DebianInputs do
       "base/types" => ["ruby", %w[base/logging tools/gen], ["ruby-rice"]],
       "gem/x" => ["gem", [], ["autoconf"]] }
   end
+  # the package sets' environment settings, by package (rock.core's for tools/orogen_metadata)
+  let(:environment) do
+    { "base/cmake" => [{ "type" => "add_path", "name" => "OROGEN_PLUGIN_PATH", "values" => ["$PREFIX/share/orogen/plugins"] },
+                       { "type" => "add_path", "name" => "PATH", "values" => ["$PREFIX/sbin"] },
+                       { "type" => "set", "name" => "BAD NAME", "values" => ["x"] }],
+      "tools/gen" => [{ "type" => "set", "name" => "GEN_MODE", "values" => ["fast"] }] }
+  end
   # CMake defines naming other packages' prefixes (Catalog::PrefixMarkers), by package
   let(:defines) do
     { "base/logging" => { "CM" => "${prefix:base/cmake}/lib", "GONE" => "${prefix:not/released}", "TYPE" => "Release" } }
@@ -27,6 +34,7 @@ RSpec.describe Relspec::Plan::DebianInputs do
       [name, Relspec::Catalog::Package.new(
         name: name, package_set: "set", build_type: type, commit_time: "2020-06-01T00:00:00Z", source_dir: "src/#{name}",
         version: "1.0", dependencies: dependencies, defines: defines.fetch(name, {}),
+        environment: environment.fetch(name, []),
         os_dependencies: { "bookworm" => Relspec::Catalog::OsDependencies.build(apt: apt) },
         vcs: Relspec::Catalog::Vcs.new(type: "git", url: "https://example.org/#{name}.git", commit: "c" * 40)
       )]
@@ -60,6 +68,19 @@ RSpec.describe Relspec::Plan::DebianInputs do
 
   def field(text, name)
     text[/^#{name}:(.*?)^(?=\S)/m, 1].split(",").map(&:strip)
+  end
+
+  # autoproj builds with every dependency's environment: tools/logger's oroGen
+  # run found no metadata_support plugin without OROGEN_PLUGIN_PATH
+  it "carries the package sets' variables of the whole closure into debian/rules, and only plain names" do
+    expect(input("base/types").closure_environment).to eq(%w[GEN_MODE OROGEN_PLUGIN_PATH])
+    expect(input("base/logging").closure_environment).to eq(%w[OROGEN_PLUGIN_PATH])
+    expect(input("base/cmake").closure_environment).to eq([])
+    rules = Relspec::Debian::DebianDir.render(input("base/logging"), version: "1.0-1~bookworm").fetch("rules").first
+    expect(rules).to include(' "OROGEN_PLUGIN_PATH=$${OROGEN_PLUGIN_PATH:-}")',
+                             "export OROGEN_PLUGIN_PATH := $(call relspec_get,OROGEN_PLUGIN_PATH)\n")
+    expect(rules).to match(/^relspec_env := \$\(shell unset .* GEM_PATH OROGEN_PLUGIN_PATH; /)
+    expect(rules).not_to include("BAD NAME")
   end
 
   it "gives a package the build-only tools of its whole dependency closure, not those of others" do
