@@ -165,7 +165,8 @@ module Relspec
     def self.include_targets(repository, dirs, config, results, uploads, export:)
       reprepro = Reprepro.new(repository, dirs)
       changed = write_config(dirs.fetch(:conf), config)
-      PoolGuard.check(repository, uploads.values.flatten.flat_map(&:items))
+      PoolGuard.check(repository, uploads.values.flatten.flat_map(&:items),
+                      published: Dir.empty?(dirs.fetch(:db)) ? [] : reprepro.pool_files)
       targets = results.map do |target, read|
         listed = Dir.empty?(dirs.fetch(:db)) ? [] : reprepro.sources(target.codename)
         held, fresh = uploads[target].partition { |upload| listed.include?("#{upload.source} #{upload.version}") }

@@ -10,11 +10,14 @@ require "json"
 # is a change, with `--exit-code` exit 1 and `"changed": true`. The demo's
 # real lock, edited.
 RSpec.describe "relspec diff on locks whose records are not what they seem", :tmpdir do
+  CMAKE_VERSION = /^      version: "1\.0\.20200504\.080000-\d+~bookworm"\n/
   let(:good) { File.join(CliRunner::ROOT, "releases", "demo-base", "lock.yml") }
   let(:text) { File.read(good) }
 
+  # +from+: text or a Regexp (base/cmake's target version, whose Debian
+  # revision bin/demo moves whenever the example's debian/ changes)
   def edited(name, from, to)
-    expect(text).to include(from)
+    expect(text).to match(from.is_a?(Regexp) ? from : Regexp.new(Regexp.escape(from)))
     File.write(File.join(@dir, name), text.sub(from, to))
     name
   end
@@ -31,12 +34,12 @@ RSpec.describe "relspec diff on locks whose records are not what they seem", :tm
       "old.yml:9:13: error[lock]: cannot read the lock: packages.base/cmake.commit must be text, not the number 1234567\n"
     ],
     "a number as a target version" => [
-      "      version: \"1.0.20200504.080000-4~bookworm\"\n", "      version: 1.10\n",
+      CMAKE_VERSION, "      version: 1.10\n",
       "old.yml:54:16: error[lock]: cannot read the lock: targets.bookworm/amd64.base/cmake.version must be text, " \
       "not the number 1.10\n"
     ],
     "a null target version" => [
-      "      version: \"1.0.20200504.080000-4~bookworm\"\n", "      version: null\n",
+      CMAKE_VERSION, "      version: null\n",
       "old.yml:54:16: error[lock]: cannot read the lock: targets.bookworm/amd64.base/cmake: a published decision needs a version\n"
     ],
     "a package keyed 7" => [

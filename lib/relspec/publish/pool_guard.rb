@@ -9,12 +9,17 @@ module Relspec
     # (docs/design.md, One truth for versions): apt clients that saw the first would fail their checksum
     # on the second. reprepro refuses too, but only in the middle of a batch;
     # this check refuses the whole publication before anything is included,
-    # and names both files.
+    # and names both files. A file in pool/ that the database does not hold
+    # was never published: it is what a reprepro killed while copying left
+    # (often empty), and it is removed rather than compared (reprepro would
+    # refuse to put the right bytes in its place).
     module PoolGuard
       module_function
 
-      # +items+: Upload::Item; raises PublishError on the first conflict.
-      def check(repository, items)
+      # +items+: Upload::Item; +published+: the pool paths the database
+      # holds (Reprepro#pool_files). Raises PublishError on conflicts.
+      def check(repository, items, published:)
+        published = published.to_h { |path| [path, true] }
         digests = Hash.new { |hash, path| hash[path] = Digest::SHA256.file(path).hexdigest }
         conflicts = items.group_by(&:pool).flat_map do |pool, same|
           held = File.join(repository, pool)
@@ -24,6 +29,7 @@ module Relspec
               "both to be published as #{pool}"
           end
           next within unless File.file?(held)
+          next within.tap { File.unlink(held) } unless published[pool]
 
           within + same.reject { |item| digests[item.local] == digests[held] }.map do |item|
             "#{item.local} (sha256 #{digests[item.local]}) differs from #{held} (sha256 #{digests[held]}), already published"

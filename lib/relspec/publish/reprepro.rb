@@ -40,6 +40,12 @@ module Relspec
         run("export")
       end
 
+      # The pool files the database holds ("pool/main/…" paths): what was
+      # published, unlike a file an interrupted reprepro left in pool/.
+      def pool_files
+        run("_listchecksums").lines.map { |line| line.split(" ", 2).first }.compact
+      end
+
       def deleteunreferenced
         run("deleteunreferenced")
       end

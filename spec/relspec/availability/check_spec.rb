@@ -83,7 +83,7 @@ RSpec.describe "relspec check" do
   context "with an Ubuntu target and Launchpad" do
     # Everything the demo's jammy packages ask for except the motif library
     # of tools/legacy (it has a libmotif3-dev, to be suggested instead).
-    PUBLISHED = %w[debhelper cmake autoconf automake libtool ruby git libboost-all-dev libeigen3-dev
+    PUBLISHED = %w[debhelper cmake autoconf automake libtool ruby ruby-dev git libboost-all-dev libeigen3-dev
                    libyaml-cpp-dev ruby-nokogiri].freeze
 
     before(:all) do
@@ -112,7 +112,7 @@ RSpec.describe "relspec check" do
 
       @server.requests.clear
       again = run_in_cache("check", "specs/lp.yml", "--launchpad-url", @server.base)
-      expect(again.stdout).to include("jammy/amd64: 12 relations checked, 1 missing (launchpad: #{@server.base})")
+      expect(again.stdout).to include("jammy/amd64: 13 relations checked, 1 missing (launchpad: #{@server.base})")
       expect(@server.requests.reject { |query| query["exact_match"] == "false" }).to be_empty
 
       compile = run_in_cache("compile", "specs/lp.yml", "--out", "lp-out", "--launchpad-url", @server.base)
