@@ -14,6 +14,7 @@ require_relative "builder/repositories"
 require_relative "builder/scheduler"
 require_relative "builder/tool"
 require_relative "builder/unlinked_path"
+require_relative "builder/staged_results"
 require_relative "abi/dumper"
 require_relative "builder/host_backend"
 require_relative "builder/sbuild_backend"
@@ -157,10 +158,9 @@ module Relspec
                    else
                      Scheduler.new(plan.entries, jobs: @jobs, keep_going: @keep_going, done: done)
                               .run(on_start: on_start, on_done: on_done) do |entry|
-                       request = request_for(plan, entry, target, repositories, local.synchronize { debs.dup }, dir)
-                       files = backend.build(request)
-                       local.synchronize { debs.concat(files.grep(/\.u?deb\z/)) }
-                       files + abi_dumps(request, files)
+                       build_one(plan, entry, target, repositories, dir, backend) do |built|
+                         local.synchronize { built ? debs.concat(built.grep(/\.u?deb\z/)) : debs.dup }
+                       end
                      end
                    end
         results.write(backend: backend.name) if outcomes.empty?
@@ -178,10 +178,20 @@ module Relspec
         end
       end
 
-      def request_for(plan, entry, target, repositories, debs, dir)
-        output_dir = UnlinkedPath.check(dir, "results/#{entry.source}")
+      # Builds +entry+ into a staging folder that replaces its previous
+      # results only on success (StagedResults); +debs+ is called with nil
+      # for the .debs built so far and with the new files once built.
+      # Returns the new files.
+      def build_one(plan, entry, target, repositories, dir, backend, &debs)
+        staged = StagedResults.new(dir, entry.source)
+        request = request_for(plan, entry, target, repositories, debs.call(nil), dir, staged.prepare)
+        files = backend.build(request)
+        staged.settle(files + abi_dumps(request, files)).tap { |settled| debs.call(settled) }
+      end
+
+      # +output_dir+: where the build puts its files (StagedResults#staging).
+      def request_for(plan, entry, target, repositories, debs, dir, output_dir)
         log = UnlinkedPath.check(dir, "logs/#{entry.source}.log")
-        FileUtils.rm_rf(output_dir)
         File.write(log, "")
         Request.new(source: entry.source, version: entry.version, dsc: File.expand_path(plan.dsc_path(entry)),
                     target: target, repositories: repositories, local_debs: debs, output_dir: output_dir, log: log)

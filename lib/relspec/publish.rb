@@ -152,7 +152,7 @@ module Relspec
       if File.exist?(path)
         results = Builder::BuildResults.read(path, release: release, target: target)
         plan = Builder::BuildPlan.read(File.dirname(path))
-        return results.within(plan.entries.map(&:source))
+        return results.at_versions(plan.entries.to_h { |entry| [entry.source, entry.version] })
       end
       raise PublishError, "#{target} of #{release} has not been built: #{path} does not exist (run relspec build)" if explicit
 

@@ -136,6 +136,15 @@ module Relspec
                                                  backend: @backend)
       end
 
+      # #within, keeping only records at the version +versions+ (source =>
+      # planned version) names: what publish may take. A record of an
+      # earlier version of a planned package (its rebuild not done yet) is
+      # not the release's, and counts as not built.
+      def at_versions(versions)
+        self.class.new(@path, @release, @target, backend: @backend,
+                                                 records: @records.values.select { |record| versions[record.source] == record.version })
+      end
+
       def write(backend:)
         @backend = backend
         data = { FORMAT_KEY => FORMAT_VERSION, "release" => @release, "target" => @target, "backend" => backend,

@@ -115,6 +115,20 @@ RSpec.describe Relspec::Builder::BuildResults do
     end
   end
 
+  # publish takes the planned version only: a record of the version before
+  # (its rebuild interrupted or not started) is not the release's
+  it "gives, for publish, only the records at the planned versions" do
+    Dir.mktmpdir do |dir|
+      results = described_class.load(dir, release: "demo-base", target: target)
+      { "aa-a" => "1-1", "zz-b" => "1-1", "mm-c" => "3-1" }.each do |source, version|
+        results.record(described_class::Record.new(source: source, package: source, version: version, status: "built",
+                                                   files: []))
+      end
+      view = results.at_versions("aa-a" => "1-1", "zz-b" => "1-2")
+      expect(view.entries.map(&:source)).to eq(["aa-a"])
+    end
+  end
+
   it "refuses a dsc_sha256 that is not a SHA256, naming the line" do
     text = good.sub("  status: built\n", "  dsc_sha256: abc\n    status: built\n")
     expect { described_class.parse(text, file: "build-results.yml", release: "demo-base", target: target) }
