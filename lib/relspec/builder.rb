@@ -158,9 +158,9 @@ module Relspec
                    else
                      Scheduler.new(plan.entries, jobs: @jobs, keep_going: @keep_going, done: done)
                               .run(on_start: on_start, on_done: on_done) do |entry|
-                       build_one(plan, entry, target, repositories, dir, backend) do |built|
-                         local.synchronize { built ? debs.concat(built.grep(/\.u?deb\z/)) : debs.dup }
-                       end
+                       built = build_one(plan, entry, target, repositories, dir, backend, local.synchronize { debs.dup })
+                       local.synchronize { debs.concat(built.grep(/\.u?deb\z/)) }
+                       built
                      end
                    end
         results.write(backend: backend.name) if outcomes.empty?
@@ -179,14 +179,13 @@ module Relspec
       end
 
       # Builds +entry+ into a staging folder that replaces its previous
-      # results only on success (StagedResults); +debs+ is called with nil
-      # for the .debs built so far and with the new files once built.
-      # Returns the new files.
-      def build_one(plan, entry, target, repositories, dir, backend, &debs)
+      # results only on success (StagedResults); +debs+: the .debs built so
+      # far in this run. Returns the new files at their final paths.
+      def build_one(plan, entry, target, repositories, dir, backend, debs)
         staged = StagedResults.new(dir, entry.source)
-        request = request_for(plan, entry, target, repositories, debs.call(nil), dir, staged.prepare)
+        request = request_for(plan, entry, target, repositories, debs, dir, staged.prepare)
         files = backend.build(request)
-        staged.settle(files + abi_dumps(request, files)).tap { |settled| debs.call(settled) }
+        staged.settle(files + abi_dumps(request, files))
       end
 
       # +output_dir+: where the build puts its files (StagedResults#staging).
