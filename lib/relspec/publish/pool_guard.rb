@@ -29,7 +29,11 @@ module Relspec
               "both to be published as #{pool}"
           end
           next within unless File.file?(held)
-          next within.tap { File.unlink(held) } unless published[pool]
+
+          unless published[pool]
+            File.unlink(held) # an interrupted reprepro's leftover, never published
+            next within
+          end
 
           within + same.reject { |item| digests[item.local] == digests[held] }.map do |item|
             "#{item.local} (sha256 #{digests[item.local]}) differs from #{held} (sha256 #{digests[held]}), already published"
