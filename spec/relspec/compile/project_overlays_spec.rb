@@ -23,8 +23,20 @@ RSpec.describe "the project's overlays on the real Rock sources" do
     File.dirname(patch, 2).split(%r{/(?:toolchain_)?overlays/}).last
   end
 
+  # The toolchain's packages are in the shared workspace; the core release's
+  # others (gui/osgviz) are cloned alone from their bundle, named after the
+  # package (slashes as dashes).
   def source_dir(package)
-    File.join(@workspace.root, "src", RealRockWorkspace::PACKAGES.fetch(package).last)
+    known = RealRockWorkspace::PACKAGES[package]
+    return File.join(@workspace.root, "src", known.last) if known
+
+    dir = File.join(@workspace.root, "overlay-sources", package)
+    unless File.directory?(dir)
+      bundle = RealRockWorkspace.bundle_path(package.tr("/", "-"))
+      output, status = Open3.capture2e("git", "clone", "-q", bundle, dir)
+      raise "cannot clone #{bundle}: #{output}" unless status.success?
+    end
+    dir
   end
 
   it "has a patch for each upstream bug docs/compile.md lists" do
