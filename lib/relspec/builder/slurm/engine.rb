@@ -7,6 +7,7 @@ require_relative "../../error"
 require_relative "../build_plan"
 require_relative "../request"
 require_relative "../scheduler"
+require_relative "../staged_results"
 require_relative "job_result"
 require_relative "job_script"
 require_relative "file_pattern"
@@ -146,6 +147,7 @@ module Relspec
                                            "#{@target} (run #{@run_id})",
                                     steps: @backend.job_steps(request, work), work: work,
                                     result: result_path(entry.source), output_dir: request.output_dir,
+                                    staging: StagedResults.new(@dir, entry.source).staging,
                                     prefix: "results/#{entry.source}")
           AtomicFile.write(path, script)
           # afterok on every build of the run the job's backend installs
