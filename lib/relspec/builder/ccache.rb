@@ -2,6 +2,7 @@
 
 require "etc"
 require "fileutils"
+require "find"
 require_relative "../error"
 
 module Relspec
@@ -115,6 +116,7 @@ module Relspec
           check_folder
           File.chown(*owner, @dir) if File.stat(@dir).uid != owner.first && Dir.empty?(@dir)
           check_owner
+          hand_back_contents
           # nobody but the build user writes (or reads) it
           File.chmod(0o700, @dir)
           @ready = true
@@ -127,6 +129,22 @@ module Relspec
         return if File.directory?(@dir) && !File.symlink?(@dir)
 
         raise BuildError, "ccache folder #{@dir} is not a folder (#{VARIABLE} chooses another, \"off\" none)"
+      end
+
+      # Gives the build user what someone else (root) made inside the folder:
+      # `ccache -C` or `ccache -z` run as root on it writes root's stats files
+      # and folders, after which every compile in a chroot stops at
+      # "Permission denied" (a core release run lost five packages and all
+      # behind them to it). The folder is the build user's, so its contents
+      # are too; lchown never follows a link out of it.
+      def hand_back_contents
+        return unless Process.uid.zero?
+
+        uid, gid = owner
+        Find.find(@dir) do |path|
+          stat = File.lstat(path)
+          File.lchown(uid, gid, path) unless stat.uid == uid && stat.gid == gid
+        end
       end
 
       def check_owner
