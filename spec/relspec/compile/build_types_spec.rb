@@ -18,7 +18,9 @@ RSpec.describe "compiling Ruby gemspec and oroGen packages" do
       s.executables = ["rubylib"]
     end
   RUBY
-  # as orogen's: bin/ holds scripts, the gemspec declares no executables
+  # as orogen's: bin/ holds scripts, the gemspec declares no executables;
+  # and as roby 3.1.0's, it asks for a Ruby this machine does not have
+  # (autoproj never asks RubyGems, so the package is used all the same)
   TOOL_GEMSPEC = <<~RUBY
     Gem::Specification.new do |s|
       s.name = "gentool"
@@ -27,8 +29,11 @@ RSpec.describe "compiling Ruby gemspec and oroGen packages" do
       s.authors = ["Rock Packaging"]
       s.files = `git ls-files -z`.split("\\x0")
       s.require_paths = ["lib"]
+      s.required_ruby_version = "2.5.0"
     end
   RUBY
+  # a gemspec RubyGems cannot build: it lists a file the package lacks
+  BROKEN_GEMSPEC = GEMSPEC.sub('"rubylib"', '"brokenlib"').sub(/s\.files = .*/, 's.files = ["lib/missing.rb"]')
 
   # as tools/orocos.rb's: a C extension that autoproj's setup task (rake
   # default) compiles into lib/, which .gitignore hides from the gemspec's list
@@ -75,7 +80,9 @@ RSpec.describe "compiling Ruby gemspec and oroGen packages" do
     builder.package("drivers/orogen/camera", type: :orogen, date: "2020-03-02T00:00:00Z",
                                              files: { "camera.orogen" => "name \"camera\"\n" })
     builder.package("tools/extlib", type: :ruby, date: "2020-03-01T00:00:00Z", version: "0.1", files: EXT_FILES)
-    builder.layout("tools/rubylib", "tools/gentool", "tools/extlib", "drivers/orogen/camera")
+    builder.package("tools/brokenlib", type: :ruby, date: "2020-03-01T00:00:00Z", version: "0.1",
+                                       files: { "brokenlib.gemspec" => BROKEN_GEMSPEC, "lib/brokenlib.rb" => "\n" })
+    builder.layout("tools/rubylib", "tools/gentool", "tools/extlib", "tools/brokenlib", "drivers/orogen/camera")
     builder.create
     FileUtils.mkdir_p(File.join(@dir, "specs"))
     File.write(File.join(@dir, "specs", "types.yml"), "release: types\nworkspace: ../ws/workspace\n" \
@@ -90,14 +97,27 @@ RSpec.describe "compiling Ruby gemspec and oroGen packages" do
   after(:all) { FileUtils.rm_rf(@dir) }
 
   def build(deb, work)
+    output, status = build_output(deb, work)
+    expect(status).to be_success, output.lines.last(20).join
+    Dir.glob(File.join(work, "#{deb}_*.deb")).first
+  end
+
+  def build_output(deb, work)
     dsc = Dir.glob(File.join(@dir, "out", "types", "bookworm-amd64", deb, "*.dsc")).first
     output, status = Open3.capture2e("dpkg-source", "-x", dsc, deb, chdir: work)
     raise output unless status.success?
 
     env = { "PATH" => "#{@tools}:#{ENV.fetch('PATH')}" }
-    output, status = Open3.capture2e(env, "dpkg-buildpackage", "-us", "-uc", "-b", "-d", chdir: File.join(work, deb))
-    expect(status).to be_success, output.lines.last(20).join
-    Dir.glob(File.join(work, "#{deb}_*.deb")).first
+    Open3.capture2e(env, "dpkg-buildpackage", "-us", "-uc", "-b", "-d", chdir: File.join(work, deb))
+  end
+
+  it "fails the build when the gem cannot be built, instead of shipping an empty package" do
+    Dir.mktmpdir("relspec-ruby-broken") do |work|
+      output, status = build_output("rock-types-ruby-tools-brokenlib", work)
+      expect(status).not_to be_success
+      expect(output).to include("lib/missing.rb")
+      expect(Dir.glob(File.join(work, "*.deb"))).to eq([])
+    end
   end
 
   def contents(deb)
