@@ -3,7 +3,6 @@
 require "spec_helper"
 require "open3"
 require "relspec/builder/slurm/job_script"
-require "relspec/builder/slurm/job_result"
 
 # A Slurm job's script, run by /bin/sh here as a node runs it (no cluster
 # needed for what the script itself does): its files replace the previous

@@ -137,17 +137,18 @@ module Relspec
 
         def submit_build(entry, in_run, ids, repositories, done_debs)
           ancestors = ancestors(entry, in_run)
+          staged = StagedResults.new(@dir, entry.source)
           request = Request.new(source: entry.source, version: entry.version, dsc: File.expand_path(@plan.dsc_path(entry)),
                                 target: @target, repositories: repositories,
                                 local_debs: done_debs + ancestors.map { |source| File.join(@dir, "results", source) },
-                                output_dir: File.join(@dir, "results", entry.source), log: log_path(entry.source))
+                                output_dir: staged.final, log: log_path(entry.source))
           work = work_dir(entry.source)
           path = File.join(@jobs_dir, "#{entry.source}.sh")
           script = JobScript.render(title: "relspec: build #{entry.source} #{entry.version} for #{@plan.release} " \
                                            "#{@target} (run #{@run_id})",
                                     steps: @backend.job_steps(request, work), work: work,
                                     result: result_path(entry.source), output_dir: request.output_dir,
-                                    staging: StagedResults.new(@dir, entry.source).staging,
+                                    staging: staged.staging,
                                     prefix: "results/#{entry.source}")
           AtomicFile.write(path, script)
           # afterok on every build of the run the job's backend installs
