@@ -48,7 +48,7 @@ class RealRockWorkspace
   CHECKOUTS = { "tools/class_loader" => "0.3.8" }.freeze
 
   def self.available?
-    (PACKAGE_SETS.values + PACKAGES.values.map(&:first)).all? { |bundle| File.file?(bundle_path(bundle)) }
+    (PACKAGE_SETS.values + self::PACKAGES.values.map(&:first)).all? { |bundle| File.file?(bundle_path(bundle)) }
   end
 
   def self.skip_reason
@@ -71,16 +71,9 @@ class RealRockWorkspace
   def create
     write_configuration(["rock-core/package_set"])
     write("autoproj/overrides.yml", overrides)
-    # ../shared has no SISL (external/sisl is left out where these are
-    # built); base/types' CMake stops unless told to do without, so the
-    # maintainer says so in the workspace, as autoproj users do
-    write("autoproj/overrides.rb", <<~RUBY)
-      setup_package "base/types" do |pkg|
-        pkg.define "USE_SISL", "OFF"
-      end
-    RUBY
+    write("autoproj/overrides.rb", setup_overrides) if setup_overrides
     PACKAGE_SETS.each { |github, bundle| git("clone", "-q", self.class.bundle_path(bundle), remote_dir(github)) }
-    PACKAGES.each do |name, (bundle, dir)|
+    self.class::PACKAGES.each do |name, (bundle, dir)|
       git("clone", "-q", "--mirror", self.class.bundle_path(bundle), repository(name))
       branch = CHECKOUTS[name] ? ["-b", CHECKOUTS[name]] : []
       git("clone", "-q", "-o", "autobuild", *branch, repository(name), File.join("src", dir))
@@ -88,7 +81,24 @@ class RealRockWorkspace
     root
   end
 
+  # Whether the workspace is there with every package checked out (a DIR
+  # kept from a run with other packages is not).
+  def complete?
+    self.class::PACKAGES.each_value.all? { |(_, dir)| File.directory?(File.join(root, "src", dir)) }
+  end
+
   private
+
+  # This workspace has no SISL (external/sisl is left out where it is built):
+  # base/types' CMake stops unless told to do without, so the maintainer says
+  # so in the workspace, as autoproj users do.
+  def setup_overrides
+    <<~RUBY
+      setup_package "base/types" do |pkg|
+        pkg.define "USE_SISL", "OFF"
+      end
+    RUBY
+  end
 
   # .autoproj/config.yml and autoproj/ as rock-core/buildconf has them:
   # the manifest loads +package_sets+ (GitHub names) and lays out rock.core.
@@ -128,7 +138,7 @@ class RealRockWorkspace
   end
 
   def overrides
-    "overrides:\n#{PACKAGES.keys.map { |name| override(name) }.join}"
+    "overrides:\n#{self.class::PACKAGES.keys.map { |name| override(name) }.join}"
   end
 
   # autoproj/overrides.yml's entry pointing +name+ at its repository here.

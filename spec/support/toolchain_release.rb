@@ -2,6 +2,7 @@
 
 require "fileutils"
 require_relative "real_rock_workspace"
+require_relative "real_rock_sisl_workspace"
 require_relative "rock_gems"
 
 # The Rock toolchain as a release maintainer would package it from the REAL
@@ -14,16 +15,22 @@ require_relative "rock_gems"
 #
 #   release = ToolchainRelease.new(dir, select: %w[base/orogen/std base/types])
 #   release.write  # dir/specs/rock.yml, dir/gems, dir/overlays (and dir/workspace once)
+#
+# With sisl: true the workspace has SISL (RealRockSislWorkspace), base/types
+# is built with it and base/orogen/types can be selected (TYPES_SELECTION).
 class ToolchainRelease
   ROOT = File.expand_path("../..", __dir__)
 
   # What the acceptance needs: oroGen's chain up to base/orogen/std, and
   # base/types for the user's component.
   DEFAULT_SELECTION = %w[base/orogen/std base/types].freeze
+  # ... and the typekit of the types every component uses (needs sisl: true)
+  TYPES_SELECTION = (DEFAULT_SELECTION + %w[base/orogen/types]).freeze
 
-  # Packages of the layout whose repositories ../shared does not bundle.
-  # external/sisl among them keeps base/orogen/types out: it names SISL as a
-  # hard dependency (its typekit wraps base/geometry/Spline).
+  # Packages of the layout the workspace does not check out (it clones only
+  # RealRockWorkspace::PACKAGES from ../shared). external/sisl among them
+  # keeps base/orogen/types out: it names SISL as a hard dependency (its
+  # typekit wraps base/geometry/Spline); with sisl: true SISL is in.
   NOT_BUNDLED = %w[
     base/console_bridge base/scripts base/templates/** bundles/** drivers/** external/sisl gui/osgviz gui/rock_webapp
     gui/vizkit perception/** tools/class_loader tools/log_tools tools/logger tools/msgpack-c tools/pocolog
@@ -35,9 +42,10 @@ class ToolchainRelease
 
   attr_reader :dir, :selection
 
-  def initialize(dir, select: DEFAULT_SELECTION)
+  def initialize(dir, select: DEFAULT_SELECTION, sisl: false)
     @dir = dir
     @selection = select
+    @sisl = sisl
   end
 
   def spec_path
@@ -49,30 +57,34 @@ class ToolchainRelease
   end
 
   def workspace
-    @workspace ||= RealRockWorkspace.new(dir)
+    @workspace ||= (@sisl ? RealRockSislWorkspace : RealRockWorkspace).new(dir)
   end
 
   # Writes what `relspec compile` needs; the workspace only when it is not
   # there yet (a second run rebuilds only what changed). Raises when a gem
-  # can be neither found nor fetched.
+  # can be neither found nor fetched, or when dir's workspace was made
+  # without a package this release needs (SISL).
   def write
     workspace.create unless File.directory?(workspace.root)
+    raise "#{workspace.root} was made without some of this release's packages: remove it" unless workspace.complete?
+
     GEMS.each do |name, version|
       next if RockGems.provide(File.join(dir, "gems"), name, version)
 
       raise "#{name}-#{version}.gem is neither in #{RockGems::CACHE} nor fetchable from #{Gem.sources.first}"
     end
     # the project's overlays (upstream bugs patched for this release), as
-    # they are, and the one building base/types without SISL needs
+    # they are, and (without SISL) the one building base/types without it needs
     FileUtils.rm_rf(File.join(dir, "overlays"))
     FileUtils.cp_r(File.join(ROOT, "overlays"), dir)
-    FileUtils.cp_r(File.join(ROOT, "spec", "fixtures", "toolchain_overlays", "."), File.join(dir, "overlays"))
+    FileUtils.cp_r(File.join(ROOT, "spec", "fixtures", "toolchain_overlays", "."), File.join(dir, "overlays")) unless @sisl
     FileUtils.mkdir_p(File.dirname(spec_path))
     File.write(spec_path, spec_text)
   end
 
   def spec_text
-    left_out = NOT_BUNDLED.map { |match| "  - { match: #{match}, reason: not among the repositories of ../shared }\n" }.join
+    not_here = @sisl ? NOT_BUNDLED - %w[external/sisl] : NOT_BUNDLED
+    left_out = not_here.map { |match| "  - { match: #{match}, reason: not among the repositories of ../shared }\n" }.join
     <<~YAML
       release: rock
       maintainer: relspec toolchain <toolchain@relspec.invalid>

@@ -21,14 +21,23 @@ require_relative "../support/installed_system"
 #
 # bin/test runs it in its chroot process with the host backend (about 22 min
 # there, beside the rest of the suite); bin/toolchain-acceptance runs it with
-# sbuild (docs/performance.md).
+# sbuild and RELSPEC_TOOLCHAIN_TYPES=1: SISL, base/types with it and
+# base/orogen/types built too, and a second component, on
+# /base/samples/RigidBodyState from base/orogen/types' typekit, run (outside
+# CI: base/orogen/types alone is a 13-16 minute build; docs/performance.md).
 RSpec.describe "a user's oroGen component on the packaged Rock toolchain" do
   FIXTURE = File.expand_path("../fixtures/orogen_component", __dir__)
+  RBS_FIXTURE = File.expand_path("../fixtures/orogen_rbs_component", __dir__)
+  TYPES = ENV["RELSPEC_TOOLCHAIN_TYPES"] == "1"
 
   before(:all) do
     need_fixture(RealRockWorkspace.available?, RealRockWorkspace.skip_reason)
     @dir = ENV.fetch("RELSPEC_TOOLCHAIN_DIR") { Dir.mktmpdir("relspec-toolchain") }
-    @release = ToolchainRelease.new(@dir)
+    @release = if TYPES
+                 ToolchainRelease.new(@dir, select: ToolchainRelease::TYPES_SELECTION, sisl: true)
+               else
+                 ToolchainRelease.new(@dir)
+               end
     @release.write
     backend = ENV.fetch("RELSPEC_TOOLCHAIN_BACKEND", "sbuild")
     @compile = relspec("compile", "specs/rock.yml", "--out", "out", "--quiet", chdir: @dir)
@@ -51,6 +60,12 @@ RSpec.describe "a user's oroGen component on the packaged Rock toolchain" do
     FileUtils.cp_r(FIXTURE, @system.path("tmp/orogen_component"))
     @session, status = @system.run("bash /tmp/orogen_component/user_session.sh /tmp/orogen_component /opt/rock/rock/rock-rock")
     raise "the user's session failed:\n#{@session}" unless status.success?
+    next unless TYPES
+
+    FileUtils.cp_r(RBS_FIXTURE, @system.path("tmp/orogen_rbs_component"))
+    @rbs_session, status = @system.run("for env in /opt/rock/rock/*/env.sh; do . \"$env\"; done; " \
+                                       "bash /tmp/orogen_rbs_component/user_session.sh /tmp/orogen_rbs_component")
+    raise "the RigidBodyState session failed:\n#{@rbs_session}" unless status.success?
   end
 
   after(:all) { FileUtils.rm_rf(@dir) unless ENV["RELSPEC_TOOLCHAIN_DIR"] }
@@ -64,10 +79,12 @@ RSpec.describe "a user's oroGen component on the packaged Rock toolchain" do
   it "builds the chain in dependency order" do
     order = YAML.safe_load_file(File.join(@release.target_dir, "plan.yml")).fetch("builds").map { |entry| entry["package"] }
     chain = %w[typelib rtt rtt_typelib orogen base/orogen/std]
+    chain += %w[base/orogen/types] if TYPES
     expect(order & chain).to eq(chain.sort_by { |name| order.index(name) })
     expect(order.index("typelib")).to be < order.index("rtt_typelib")
     expect(order.index("rtt")).to be < order.index("rtt_typelib")
     expect(order.index("orogen")).to be < order.index("base/orogen/std")
+    expect(order.index("external/sisl")).to be < order.index("base/types") if TYPES
     expect(@results.fetch("packages").values.map { |record| record["status"] }.uniq).to eq(["built"])
   end
 
@@ -81,6 +98,15 @@ RSpec.describe "a user's oroGen component on the packaged Rock toolchain" do
   end
 
   it "loads the installed typekit registries: base/orogen/std's and the user's" do
-    expect(@session).to include("std typekit: /std/string 8\n", "user typekit: /base/Time microseconds\n")
+    # with base/orogen/types installed, oroGen leaves /base/Time to its "base" typekit
+    owner = TYPES ? "base" : "user"
+    expect(@session).to include("std typekit: /std/string 8\n", "#{owner} typekit: /base/Time microseconds\n")
+  end
+
+  if TYPES
+    it "runs a component on /base/samples/RigidBodyState from base/orogen/types' typekit over CORBA" do
+      # position (1 2 3) at 21 us written to the task's input, doubled by its updateHook
+      expect(@rbs_session).to match(/^rbs out: 2 4 6 at 21 us$/)
+    end
   end
 end
