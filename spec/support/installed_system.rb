@@ -22,9 +22,13 @@ class InstalledSystem
 
   attr_reader :root
 
-  # +tarball+: a chroot tarball (.tar.zst); +dir+: an empty folder.
+  # +tarball+: a chroot tarball (.tar.zst); +dir+: the system's folder. A
+  # system left in +dir+ by an earlier run (a kept RELSPEC_TOOLCHAIN_DIR) is
+  # removed first: unpacked over, its dpkg state (e.g. dbus's statoverride of
+  # a group the fresh /etc/group lacks) stops the next install.
   def initialize(tarball, dir)
     @root = File.join(dir, "root")
+    FileUtils.rm_rf(@root)
     FileUtils.mkdir_p(@root)
     output, status = Open3.capture2e("tar", "--zstd", "-xf", tarball, "-C", @root)
     raise Failed, "cannot unpack #{tarball}:\n#{output}" unless status.success?

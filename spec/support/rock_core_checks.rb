@@ -73,7 +73,6 @@ class RockCoreChecks
   end
 
   def install
-    FileUtils.rm_rf(system_dir)
     @system = InstalledSystem.new(@tarball, system_dir)
     FileUtils.cp_r(@repository, @system.path("srv/release"))
     codename = File.basename(File.dirname(packages_index, 3))
