@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require "spec_helper"
+require_relative "../support/committed_releases"
 require "tmpdir"
 require "fileutils"
 require "digest"
@@ -32,7 +33,7 @@ RSpec.describe "relspec report" do
     %w[demo-base demo-child].each do |release|
       FileUtils.cp(File.join(CliRunner::ROOT, "specs", "#{release}.yml"), File.join(root, "specs"))
       FileUtils.mkdir_p(File.join(root, "releases", release))
-      FileUtils.cp(File.join(CliRunner::ROOT, "releases", release, "lock.yml"), File.join(root, "releases", release))
+      CommittedReleases.copy("#{release}/lock.yml", File.join(root, "releases", release, "lock.yml"))
     end
     target = File.join(root, "out", "demo-child", "bookworm-amd64")
     dump = gzip(File.join(target, "results", "rock-demo-child-base-types", "base.tlb.abi.xml.gz"), registry)

@@ -1,13 +1,14 @@
 # frozen_string_literal: true
 
 require "spec_helper"
+require_relative "../support/committed_releases"
 
 # Whatever is given to `relspec diff` as OLD (issue 24, item 2): a binary
 # file, an empty one, another format, a lock cut short or from a future
 # format is one error naming the file, exit 1, never exit 70 and never a
 # diff of a guess. NEW is the demo's real lock.
 RSpec.describe "relspec diff on hostile inputs", :tmpdir do
-  let(:good) { File.join(CliRunner::ROOT, "releases", "demo-base", "lock.yml") }
+  let(:good) { CommittedReleases.copy("demo-base/lock.yml", File.join(@dir, "good.yml")) }
 
   def diff(name, bytes)
     File.binwrite(File.join(@dir, name), bytes)

@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require "spec_helper"
+require_relative "../support/committed_releases"
 require "json"
 
 # The lock as `relspec diff` reads it (issue 34, cases 12 and 13): a value of
@@ -11,7 +12,7 @@ require "json"
 # real lock, edited.
 RSpec.describe "relspec diff on locks whose records are not what they seem", :tmpdir do
   CMAKE_VERSION = /^      version: "1\.0\.20200504\.080000-\d+~bookworm"\n/
-  let(:good) { File.join(CliRunner::ROOT, "releases", "demo-base", "lock.yml") }
+  let(:good) { CommittedReleases.copy("demo-base/lock.yml", File.join(@dir, "good.yml")) }
   let(:text) { File.read(good) }
 
   # +from+: text or a Regexp (base/cmake's target version, whose Debian
