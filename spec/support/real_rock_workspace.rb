@@ -71,7 +71,8 @@ class RealRockWorkspace
   def create
     write_configuration(["rock-core/package_set"])
     write("autoproj/overrides.yml", overrides)
-    write("autoproj/overrides.rb", setup_overrides) if setup_overrides
+    setup = setup_overrides
+    write("autoproj/overrides.rb", setup) if setup
     PACKAGE_SETS.each { |github, bundle| git("clone", "-q", self.class.bundle_path(bundle), remote_dir(github)) }
     self.class::PACKAGES.each do |name, (bundle, dir)|
       git("clone", "-q", "--mirror", self.class.bundle_path(bundle), repository(name))
