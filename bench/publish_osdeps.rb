@@ -26,7 +26,7 @@ distributions = effective.distributions
 
 from_lock = lambda do
   locked = Relspec::Publish::LockedRelease.read(resolution, SPEC, timeout: 10)
-  reader = Relspec::Plan::Ancestors.reader(effective.repository, repository, {}, Relspec::Apt::Cache.new(nil))
+  reader = Relspec::Apt::Opening.repository(effective.repository, repository)
   own = Relspec::Plan::OwnRepository.read(reader, Relspec::Target.all(effective))
   listing = Relspec::Publish::HeldPackages.list(locked.lock, own: own, inventory: locked.inventory)
   Relspec::Osdeps::Renderer.render(listing.targets, distributions)

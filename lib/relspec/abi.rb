@@ -39,8 +39,9 @@ module Relspec
       resolution = ReleaseSpec.resolve(path)
       effective = resolution.effective
       tree = OutputTree.new(out, effective.release)
+      lineage = resolution.lineage
       targets = Target.select(target, Target.all(effective), effective.release).map do |one|
-        repositories = Builder::Repositories.of(resolution, one.codename)
+        repositories = Builder::Repositories.of(lineage, one.codename)
         counterparts = counterparts(repositories, effective.release, against)
         Report::TargetReport.new(target: one, entries: compare(own(tree, one, repositories.first, effective.release),
                                                                counterparts, one).freeze).freeze

@@ -78,6 +78,7 @@ module Relspec
         @effective = resolution.effective
         backend = make_backend
         tree = OutputTree.new(@out, @effective.release)
+        lineage = resolution.lineage
         Target.select(@only, Target.all(@effective), @effective.release).map do |target|
           dir = File.expand_path(tree.target_dir(target))
           plan = BuildPlan.read(dir)
@@ -89,7 +90,7 @@ module Relspec
             prepared = slurm? && !@prepare_only ? false : backend.prepare(target, log: prepare_log)
             next TargetReport.new(target: target, dir: dir, outcomes: [], reused: 0, prepared: prepared) if @prepare_only
 
-            build_target(target, dir, plan, backend, Repositories.of(resolution, target.codename), prepared)
+            build_target(target, dir, plan, backend, Repositories.of(lineage, target.codename), prepared)
           end
         end
       rescue Interrupt

@@ -6,7 +6,7 @@ require_relative "catalog/uncommitted_changes"
 require_relative "catalog/cache"
 require_relative "project"
 require_relative "plan/target"
-require_relative "plan/ancestor"
+require_relative "apt/opening"
 require_relative "plan/inventory"
 require_relative "plan/planner"
 require_relative "plan/lock"
@@ -52,7 +52,7 @@ module Relspec
       end
       release_catalog = Catalog::ReleaseCatalog.load(resolution, cache: catalog_cache, gem_fetch: gem_fetch, timeout: timeout,
                                                                  gem_archives: gem_archives, locked_gems: locked_gems(previous))
-      ancestors = Ancestors.of(resolution, fetcher_options: fetcher_options, cache: cache)
+      ancestors = resolution.lineage.opened_ancestors(fetcher_options: fetcher_options, cache: cache)
       inventory = Inventory.read(ancestors, targets)
       own = read_own(resolution, targets, fetcher_options, cache)
       GemCheck.call(previous, release_catalog, resolution)
@@ -150,7 +150,7 @@ module Relspec
       return OwnRepository.read(nil, targets) unless entry
 
       spec_file = resolution.spec_file
-      repository = Ancestors.reader(entry, entry.own_location, fetcher_options, cache)
+      repository = Apt::Opening.repository(entry, entry.own_location, fetcher_options: fetcher_options, cache: cache)
       OwnRepository.read(repository, targets)
     rescue Apt::Repository::Error => e
       raise InvalidInput, [Diagnostic.error("own-repository", "the repository of #{resolution.effective.release}: #{e.message}",

@@ -2,7 +2,7 @@
 
 require "fileutils"
 require_relative "release_specs"
-require_relative "plan/ancestor"
+require_relative "apt/opening"
 require_relative "plan/inventory"
 require_relative "atomic_file"
 require_relative "diagnostic"
@@ -203,7 +203,7 @@ module Relspec
     # really hold.
     def self.write_osdeps(locked, effective, repository)
       entry = effective.repository
-      reader = Plan::Ancestors.reader(entry, repository, {}, Apt::Cache.new(nil))
+      reader = Apt::Opening.repository(entry, repository)
       own = Plan::OwnRepository.read(reader, Target.all(effective))
       listing = HeldPackages.list(locked.lock, own: own, inventory: locked.inventory)
       written = Osdeps::Files.write_release(listing.targets, effective, File.join(repository, "osdeps"))

@@ -1,6 +1,6 @@
 # frozen_string_literal: true
 
-require_relative "../plan/ancestor"
+require_relative "../apt/opening"
 require_relative "../apt/cache"
 require_relative "../cache_dir"
 require_relative "apt_source"
@@ -49,7 +49,7 @@ module Relspec
 
       def archive_source(codename, archive)
         @archives[codename] ||= AptSource.new(
-          Plan::Ancestors.archive_reader(archive, @spec_dir, @fetcher_options, @apt_cache),
+          Apt::Opening.archive(archive, @spec_dir, fetcher_options: @fetcher_options, cache: @apt_cache),
           archive.read_components, names_cache: @names_cache
         )
       end

@@ -4,7 +4,7 @@ require "yaml"
 require_relative "binary_index"
 require_relative "../apt/fetcher"
 require_relative "../apt/host_lists"
-require_relative "../plan/ancestor"
+require_relative "../apt/opening"
 
 module Relspec
   module Mirror
@@ -32,7 +32,7 @@ module Relspec
       def read(target)
         index = BinaryIndex.new
         seeds = release(index, target)
-        ancestors = Plan::Ancestors.of(@resolution, fetcher_options: @fetcher_options, cache: @cache)
+        ancestors = @resolution.lineage.opened_ancestors(fetcher_options: @fetcher_options, cache: @cache)
         ancestors.each { |ancestor| repository_into(index, ancestor.repository, ancestor.name, target, optional: true) }
         required = distribution(index, target)
         Read.new(index: index, seeds: seeds, required: required, ancestors: ancestors.map(&:name)).freeze
@@ -47,7 +47,7 @@ module Relspec
                                                                      "to mirror", location: @resolution.spec_file.location(["release"]))]
         end
 
-        reader = Plan::Ancestors.reader(entry, entry.location, @fetcher_options, @cache)
+        reader = Apt::Opening.repository(entry, entry.location, fetcher_options: @fetcher_options, cache: @cache)
         names = repository_into(index, reader, @effective.release, target, optional: false)
         (names + osdeps_names(reader, target)).uniq.sort
       end
@@ -121,7 +121,7 @@ module Relspec
       end
 
       def archive_into(index, archive, target)
-        reader = Plan::Ancestors.archive_reader(archive, @spec_dir, @fetcher_options, @cache)
+        reader = Apt::Opening.archive(archive, @spec_dir, fetcher_options: @fetcher_options, cache: @cache)
         archive.read_components.each do |component|
           text = reader.packages_text(target.codename, target.arch, component: component)
           index.add(text, origin: Origin.new(label: target.codename, fetcher: reader.fetcher, distribution: true),

@@ -115,10 +115,9 @@ module Relspec
       def compute_install_dir(decision)
         if decision.inherit?
           ancestor = @ancestors.fetch(decision.ancestor)
-          prefix_dir(ancestor.install_prefix, ancestor.name, ancestor.separate_prefixes, decision.deb_name)
+          ancestor.prefixes.install_dir(ancestor.name, decision.deb_name)
         else
-          prefixes = @effective.prefixes
-          prefix_dir(prefixes.install_prefix, @effective.release, prefixes.separate_prefixes, decision.deb_name)
+          @effective.prefixes.install_dir(@effective.release, decision.deb_name)
         end
       end
 
@@ -128,11 +127,6 @@ module Relspec
           Debian::BuildInput::Dependency.new(deb_name: decision.deb_name, version: decision.version.to_s,
                                              install_dir: install_dir_of(decision))
         end
-      end
-
-      def prefix_dir(install_prefix, release, separate, deb_name)
-        ReleaseSpec::Prefixes.new(install_prefix: install_prefix, separate_prefixes: separate, package_prefix: nil)
-                             .install_dir(release, deb_name)
       end
     end
   end

@@ -1,6 +1,6 @@
 # frozen_string_literal: true
 
-require_relative "ancestor"
+require_relative "../apt/opening"
 require_relative "archive_versions"
 require_relative "../apt/repository"
 require_relative "../apt/version"
@@ -28,7 +28,7 @@ module Relspec
           archive = distributions.fetch(target.codename).archive
           next unless archive
 
-          repository = Ancestors.archive_reader(archive, spec_dir, fetcher_options, cache)
+          repository = Apt::Opening.archive(archive, spec_dir, fetcher_options: fetcher_options, cache: cache)
           found[target] = versions(repository, archive, target, wanted, cache)
         rescue Apt::Repository::Missing => e
           # e.g. Ubuntu's arm64 lives on ports.ubuntu.com, not in the amd64 archive

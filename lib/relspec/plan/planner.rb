@@ -30,7 +30,7 @@ module Relspec
     class Planner
       # +release_catalog+: Catalog::ReleaseCatalog; +effective+: the
       # release's EffectiveSpec; +spec_file+: its SpecFile (for locations);
-      # +ancestors+: Plan::Ancestor in search order; +inventory+: Inventory;
+      # +ancestors+: ReleaseSpec::Lineage::Opened in search order; +inventory+: Inventory;
       # +distribution+: DistributionPackages (the targets' own ruby-* packages);
       # +uncommitted+: name => Catalog::UncommittedChanges::Change (noted).
       # Builds come out unversioned: Settlement gives them their versions.

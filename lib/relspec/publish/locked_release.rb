@@ -7,7 +7,6 @@ require_relative "../error"
 require_relative "../apt/cache"
 require_relative "../plan/lock"
 require_relative "../plan/lock_parser"
-require_relative "../plan/ancestor"
 require_relative "../plan/inventory"
 require_relative "../target"
 
@@ -33,7 +32,8 @@ module Relspec
         stale!(path, spec_path, "#{effective.release} has no lock #{path} to list its repository from") unless lock
         stale!(path, spec_path, "#{path} was planned from another version of #{spec_path}") \
           unless lock.spec_digest == Plan::Lock.spec_digest(effective)
-        ancestors = Plan::Ancestors.of(resolution, fetcher_options: { timeout: timeout }, cache: Apt::Cache.new(Apt::Cache.default_dir))
+        ancestors = resolution.lineage.opened_ancestors(fetcher_options: { timeout: timeout },
+                                                        cache: Apt::Cache.new(Apt::Cache.default_dir))
         inventory = Plan::Inventory.read(ancestors, Target.all(effective))
         moved = moved_ancestors(lock, inventory)
         stale!(path, spec_path, "#{path} is out of date: the repository of #{moved.join(', ')} holds other packages now") \

@@ -3,6 +3,7 @@
 require_relative "hierarchy"
 require_relative "inheritance"
 require_relative "hierarchy_rules"
+require_relative "lineage"
 
 module Relspec
   module ReleaseSpec
@@ -27,6 +28,12 @@ module Relspec
         end
         @diagnostics = found.uniq(&:to_s).sort_by(&:sort_key).freeze
         freeze
+      end
+
+      # The release's repositories, its own first, then its ancestors' in
+      # search order (Lineage).
+      def lineage
+        Lineage.of(self)
       end
 
       def ok?

@@ -3,7 +3,7 @@
 require_relative "../unit_helper"
 require "relspec/plan/planner"
 require "relspec/plan/distribution_packages"
-require "relspec/plan/ancestor"
+require "relspec/release_specs/lineage"
 require "relspec/plan/inventory"
 require "relspec/plan/target"
 require "relspec/catalog/release_catalog"
@@ -34,8 +34,9 @@ RSpec.describe Relspec::Plan::Planner do
   end
 
   def ancestor(name)
-    Relspec::Plan::Ancestor.new(name: name, package_prefix: "rock", targets: { "bookworm" => ["amd64"] },
-                                install_prefix: "/opt/rock", separate_prefixes: true).freeze
+    prefixes = Relspec::ReleaseSpec::Prefixes.new(install_prefix: "/opt/rock", separate_prefixes: true, package_prefix: "rock")
+    member = Relspec::ReleaseSpec::Lineage::Member.new(name: name, prefixes: prefixes, targets: { "bookworm" => ["amd64"] })
+    Relspec::ReleaseSpec::Lineage::Opened.new(member, nil)
   end
 
   # +held+: ancestor name => {package => upstream version}; an ancestor

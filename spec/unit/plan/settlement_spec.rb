@@ -49,8 +49,8 @@ RSpec.describe Relspec::Plan::Settlement do
   def settle(history: Relspec::Plan::History.empty, held: {}, overlays: ->(_name, _arch) { no_overlay })
     release_catalog = Relspec::Catalog::ReleaseCatalog.new(catalog, { "bookworm" => graph.keys }, { "bookworm" => {} },
                                                            "/workspace", {})
-    ancestor = Relspec::Plan::Ancestor.new(name: "p", package_prefix: "rock", install_prefix: "/opt/rock",
-                                           separate_prefixes: true).freeze
+    prefixes = Relspec::ReleaseSpec::Prefixes.new(install_prefix: "/opt/rock", separate_prefixes: true, package_prefix: "rock")
+    ancestor = Relspec::ReleaseSpec::Lineage::Opened.new(Relspec::ReleaseSpec::Lineage::Member.new(name: "p", prefixes: prefixes), nil)
     inputs = Relspec::Plan::DebianInputs.new(effective: effective, ancestors: [ancestor], release_catalog: release_catalog)
     index = held.transform_values { |version| Struct.new(:version).new(version) }
     own = Relspec::Plan::OwnRepository.new(held.empty? ? {} : { target => index })
