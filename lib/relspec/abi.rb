@@ -5,7 +5,7 @@ require_relative "release_specs"
 require_relative "error"
 require_relative "target"
 require_relative "output_tree"
-require_relative "builder/build_results"
+require_relative "target_build"
 require_relative "builder/repositories"
 require_relative "abi/dumper"
 require_relative "abi/published_dumps"
@@ -39,32 +39,39 @@ module Relspec
       resolution = ReleaseSpec.resolve(path)
       effective = resolution.effective
       tree = OutputTree.new(out, effective.release)
-      lineage = resolution.lineage
-      targets = Target.select(target, Target.all(effective), effective.release).map do |one|
-        repositories = Builder::Repositories.of(lineage, one.codename)
-        counterparts = counterparts(repositories, effective.release, against)
-        Report::TargetReport.new(target: one, entries: compare(own(tree, one, repositories.first, effective.release),
-                                                               counterparts, one).freeze).freeze
-      end
-      Report.new(release: effective.release, targets: targets.freeze).freeze
+      builds = Target.select(target, Target.all(effective), effective.release).map { |one| TargetBuild.read(tree, one) }
+      of(resolution, builds, against: against)
     end
 
-    # The release's own dumps: its last build's, else its published ones.
-    def self.own(tree, target, own_repository, release)
-      path = tree.results_file(target)
-      if File.file?(path)
-        results = Builder::BuildResults.read(path, release: release, target: target)
-        return results.built.flat_map do |record|
+    # The Report of a release already read: +resolution+ of its spec and
+    # +builds+, the TargetBuild of each target to compare.
+    def self.of(resolution, builds, against: nil)
+      release = resolution.effective.release
+      lineage = resolution.lineage
+      targets = builds.map do |build|
+        repositories = Builder::Repositories.of(lineage, build.target.codename)
+        counterparts = counterparts(repositories, release, against)
+        Report::TargetReport.new(target: build.target, entries: compare(own(build, repositories.first, release),
+                                                                        counterparts, build.target).freeze).freeze
+      end
+      Report.new(release: release, targets: targets.freeze).freeze
+    end
+
+    # The release's own dumps: its last build's (at the planned versions),
+    # else its published ones.
+    def self.own(build, own_repository, release)
+      if build.built?
+        return build.results.built.flat_map do |record|
           record.files.filter_map do |file|
             library = Dumper.library_of(file.name)
-            library && Side.new(package: record.package, library: library, file: File.join(tree.target_dir(target), file.name),
+            library && Side.new(package: record.package, library: library, file: File.join(build.dir, file.name),
                                 sha256: file.sha256).freeze
           end
         end
       end
       return [] unless own_repository&.name == release
 
-      published(own_repository.uri, target)
+      published(own_repository.uri, build.target)
     end
 
     def self.published(repository, target)

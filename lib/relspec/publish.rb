@@ -8,8 +8,8 @@ require_relative "atomic_file"
 require_relative "diagnostic"
 require_relative "osdeps/files"
 require_relative "output_tree"
-require_relative "builder/build_plan"
-require_relative "builder/build_results"
+require_relative "project"
+require_relative "target_build"
 require_relative "builder/target_lock"
 require_relative "publish/repository_config"
 require_relative "publish/repository_lock"
@@ -58,12 +58,15 @@ module Relspec
       # No build of these targets runs while their results are read and included.
       holding(built_folders(tree, selected)) do
         locked = LockedRelease.read(resolution, path, timeout: timeout)
+        # Each target's last build, read once: what is published, and what
+        # the status page and its ABI verdicts describe.
+        builds = all.map { |one| TargetBuild.read(tree, one) }
         # The status page, served with the repository (every target, the
         # failures too): its inputs read before the repository is touched,
         # so that a damaged one stops the publication, not half of it.
-        page, logs = Report.read(path, out: out)
-        result = include_and_render(locked, tree, effective, repository, all, selected, waiting: waiting,
-                                                                                        explicit: !target.nil?)
+        page, logs = Report.of(resolution, Project.of_spec(path), locked.lock, builds)
+        results = results_of(builds.select { |build| selected.include?(build.target) }, tree, explicit: !target.nil?)
+        result = include_and_render(locked, results, effective, repository, all, waiting: waiting)
         result.report = Report.write(page, logs, File.join(repository, REPORT_DIR), "html")
         result
       end
@@ -82,15 +85,10 @@ module Relspec
       Builder::TargetLock.hold(folders.first, "publish", shared: true) { holding(folders.drop(1), &block) }
     end
 
-    # +explicit+: the user named the target (unbuilt is then an error).
-    # +locked+: the LockedRelease the osdeps files are listed from.
-    def self.include_and_render(locked, tree, effective, repository, all, selected, waiting:, explicit:)
-      results = selected.to_h { |one| [one, read_results(tree, one, explicit: explicit)] }
-      if results.values.none?
-        raise PublishError, "nothing to publish: no target of #{effective.release} has a build-results.yml under " \
-                            "#{tree.release_dir} (run relspec build first)"
-      end
-
+    # +results+: target => its Builder::BuildResults at the planned
+    # versions (nil: not built); +locked+: the LockedRelease the osdeps
+    # files are listed from.
+    def self.include_and_render(locked, results, effective, repository, all, waiting:)
       uploads = uploads(results, debug_symbols: effective.repository.debug_symbols)
       sign_with = effective.repository.sign_with
       SigningKey.check(sign_with) if sign_with
@@ -143,20 +141,22 @@ module Relspec
                                             location: location, hint: "add `repository: { path: <reprepro base directory> }`")]
     end
 
-    # The target's results of the packages its plan.yml builds, nil when it
-    # has none (an error when the user asked for that target). The file
-    # also keeps the records of packages an earlier, wider plan built.
-    def self.read_results(tree, target, explicit:)
-      path = tree.results_file(target)
+    # target => the results of each of +builds+ (TargetBuild), nil when it
+    # was not built (an error when the user named the target; +explicit+),
+    # and an error when none was.
+    def self.results_of(builds, tree, explicit:)
       release = tree.release
-      if File.exist?(path)
-        results = Builder::BuildResults.read(path, release: release, target: target)
-        plan = Builder::BuildPlan.read(File.dirname(path))
-        return results.at_versions(plan.entries.to_h { |entry| [entry.source, entry.version] })
-      end
-      raise PublishError, "#{target} of #{release} has not been built: #{path} does not exist (run relspec build)" if explicit
+      results = builds.to_h do |build|
+        path = tree.results_file(build.target)
+        raise PublishError, "#{build.target} of #{release} has not been built: #{path} does not exist (run relspec build)" \
+          if explicit && !build.built?
 
-      nil
+        [build.target, build.results]
+      end
+      return results if results.values.any?
+
+      raise PublishError, "nothing to publish: no target of #{release} has a build-results.yml under " \
+                          "#{tree.release_dir} (run relspec build first)"
     end
 
     # +dirs+: the Transaction's conf, db and dists folders; +export+: write
@@ -209,7 +209,7 @@ module Relspec
       written = Osdeps::Files.write_release(listing.targets, effective, File.join(repository, "osdeps"))
       [written.changed_count, listing.missing]
     end
-    private_class_method :uploads, :transaction, :repository_path, :read_results, :include_targets, :write_config, :write_osdeps,
+    private_class_method :uploads, :transaction, :repository_path, :results_of, :include_targets, :write_config, :write_osdeps,
                          :write_abi_dumps
   end
 end

@@ -8,8 +8,7 @@ require_relative "target"
 require_relative "atomic_file"
 require_relative "error"
 require_relative "plan/lock_parser"
-require_relative "builder/build_plan"
-require_relative "builder/build_results"
+require_relative "target_build"
 require_relative "report/reading"
 require_relative "report/html_renderer"
 require_relative "report/json_renderer"
@@ -40,38 +39,34 @@ module Relspec
     # The Page of the release of the spec at +path+, and the logs it links
     # to (link => file).
     def read(path, out:)
-      effective = ReleaseSpec.resolve(path).effective
-      release = effective.release
+      resolution = ReleaseSpec.resolve(path)
+      release = resolution.effective.release
       project = Project.of_spec(path)
       lock = Plan::LockParser.read(project.lock_path(release), release: release)
       raise Error, "#{release} has no #{project.lock_path(release)}: run `relspec compile` first" unless lock
 
-      ancestor = effective.parents.first
       tree = OutputTree.new(out, release)
-      inputs = Target.all(effective).map { |target| input(tree, target, release) }
-      Reading.new(lock: lock, inputs: inputs, ancestor: ancestor, abi: abi(path, out),
+      of(resolution, project, lock, Target.all(resolution.effective).map { |target| TargetBuild.read(tree, target) })
+    end
+
+    # The Page of a release already read (publish hands its own reading on):
+    # +resolution+ and +project+ of its spec, its +lock+ (Plan::Lock) and
+    # +builds+, the TargetBuild of each target.
+    def of(resolution, project, lock, builds)
+      ancestor = resolution.effective.parents.first
+      Reading.new(lock: lock, inputs: builds, ancestor: ancestor, abi: abi(resolution, builds),
                   ancestor_lock: ancestor && Plan::LockParser.read(project.lock_path(ancestor), release: ancestor)).page
     end
 
-    # target name => AbiSummary of `relspec abi`'s verdicts (Abi.run: the
+    # target name => AbiSummary of `relspec abi`'s verdicts (Abi.of: the
     # last build's dumps against the nearest ancestor's published ones).
     # A release whose verdicts cannot be computed still gets its page, which
     # says why (its Error's message).
-    def abi(path, out)
+    def abi(resolution, builds)
       require_relative "abi" # abidiff and the ancestors' indexes: only for a release being reported
-      Abi.run(path, out: out).targets.to_h { |one| [one.target.to_s, AbiSummary.of(one.entries)] }.compact
+      Abi.of(resolution, builds).targets.to_h { |one| [one.target.to_s, AbiSummary.of(one.entries)] }.compact
     rescue Error => e
-      Target.all(ReleaseSpec.resolve(path).effective).to_h { |target| [target.to_s, AbiSummary.failed(e.message)] }
-    end
-
-    def input(tree, target, release)
-      dir = tree.target_dir(target)
-      plan = File.exist?(tree.plan_file(target)) ? Builder::BuildPlan.read(dir) : nil
-      results = File.exist?(tree.results_file(target)) ? Builder::BuildResults.load(dir, release: release, target: target) : nil
-      # build-results.yml keeps records of packages a narrower plan left
-      # out; the page shows (and publishes the logs of) the plan's only
-      results = results.within(plan.entries.map(&:source)) if results && plan
-      Reading::Input.new(target: target, dir: dir, plan: plan, results: results).freeze
+      builds.to_h { |build| [build.target.to_s, AbiSummary.failed(e.message)] }
     end
 
     # Writes +page+ as FILES[format] into +dir+ with a copy of each log it

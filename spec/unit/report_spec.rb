@@ -61,9 +61,17 @@ RSpec.describe Relspec::Report do
             files:
               - { name: results/rock-a/liba.so.abi.xml.gz, sha256: #{Digest::SHA256.hexdigest('dump')}, size: 4 }
       YAML
+      Relspec::Builder::BuildPlan.write(target, release: "child", target: bookworm, entries: [
+        Relspec::Builder::BuildPlan::Entry.new(package: "a", source: "rock-a", version: "1.0-1~bookworm",
+                                               dsc: "rock-a/rock-a_1.0-1~bookworm.dsc", build_depends: [])
+      ])
     end
 
-    let(:abi) { described_class.abi(File.join(@dir, "specs", "child.yml"), File.join(@dir, "out")) }
+    let(:bookworm) { Relspec::Target.new("bookworm", "amd64") }
+    let(:abi) do
+      build = Relspec::TargetBuild.read(Relspec::OutputTree.new(File.join(@dir, "out"), "child"), bookworm)
+      described_class.abi(Relspec::ReleaseSpec.resolve(File.join(@dir, "specs", "child.yml")), [build])
+    end
 
     it "gives no summary when no ancestor published a dump to compare with" do
       expect(abi).to eq({})

@@ -15,13 +15,8 @@ module Relspec
     # (first error lines) and, when there is one, the ancestor's lock (the
     # changes, by the diff's own comparison).
     class Reading
-      # One target's files: +plan+ a Builder::BuildPlan and +results+
-      # Builder::BuildResults, nil when compile or build has not run; +dir+
-      # the target folder the results' log paths are relative to.
-      Input = Struct.new(:target, :dir, :plan, :results, keyword_init: true)
-
       # +lock+, +ancestor_lock+: Plan::Lock (the latter nil when there is
-      # none); +ancestor+: its release; +inputs+: Input per target; +abi+:
+      # none); +ancestor+: its release; +inputs+: TargetBuild per target; +abi+:
       # target name => AbiSummary (a target without one shows no verdicts).
       def initialize(lock:, inputs:, ancestor: nil, ancestor_lock: nil, abi: {}, counter: Diff::CommitCounter.new)
         @lock = lock

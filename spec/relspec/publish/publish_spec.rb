@@ -148,6 +148,34 @@ RSpec.describe "relspec publish" do
     File.write(plan, pristine)
   end
 
+  it "describes on its page what the repository holds after an interrupted rebuild" do
+    # base/logging's record is of an earlier version than the plan's: its
+    # rebuild was interrupted, so it is not the release's and not published
+    edit_results { |data| data["packages"][logging]["version"] = "0.1-1~bookworm" }
+    run = publish
+    expect(run.exit_code).to eq(0), run.stderr
+    expect(run.stdout).to include("bookworm/amd64: 1 published", "published #{cmake}")
+    expect(repository_state.keys.grep(/#{Regexp.escape(logging)}/)).to eq([])
+    report = relspec("report", "specs/solo.yml", "--out", "out", "--format", "json", chdir: @dir)
+    expect(report.exit_code).to eq(0), report.stderr
+    cells = JSON.parse(File.read(File.join(@dir, "out", "solo", "report", "report.json")))
+                .fetch("targets").first.fetch("packages").transform_values { |cell| cell["status"] }
+    expect(cells).to eq("base/cmake" => "built", "base/logging" => "not built yet")
+    page = File.read(File.join(repository, "report", "index.html"))
+    expect(page.scan("not built yet").size).to be >= 1
+  end
+
+  it "resolves its spec once and reads each target's build-results.yml once, handing that reading to its page" do
+    allow(Relspec::ReleaseSpec).to receive(:resolve).and_call_original
+    allow(Relspec::Builder::BuildResults).to receive(:read).and_call_original
+    allow(Relspec::Builder::BuildResults).to receive(:load).and_call_original
+    Relspec::Publish.run(File.join(@dir, "specs", "solo.yml"), out: File.join(@dir, "out"))
+    expect(Relspec::ReleaseSpec).to have_received(:resolve).once
+    expect(Relspec::Builder::BuildResults).to have_received(:read).once
+    expect(Relspec::Builder::BuildResults).to have_received(:load).exactly(0).times
+    expect(File.read(File.join(repository, "report", "index.html"))).to include("base/logging")
+  end
+
   it "refuses a package whose built file changed since it was recorded, before touching the repository" do
     deb = Dir.glob(File.join(@target_dir, "results", cmake, "*.deb")).first
     original = File.binread(deb)

@@ -45,6 +45,11 @@ RSpec.describe Relspec::Diff::AbiSection do
     end
     File.write(File.join(dir, "build-results.yml"), "relspec_build_results: 1\nrelease: child\ntarget: bookworm/amd64\n" \
                                                     "backend: host\npackages:\n#{records.join}")
+    entries = files.map do |source, (package, _)|
+      Relspec::Builder::BuildPlan::Entry.new(package: package, source: source, version: "1.0-1~bookworm",
+                                             dsc: "#{source}/#{source}_1.0-1~bookworm.dsc", build_depends: [])
+    end
+    Relspec::Builder::BuildPlan.write(dir, release: "child", target: "bookworm/amd64", entries: entries)
   end
 
   before do

@@ -4,6 +4,7 @@ require_relative "../unit_helper"
 require "tmpdir"
 require "fileutils"
 require "relspec/report/reading"
+require "relspec/target_build"
 require "relspec/builder/build_plan"
 require "relspec/builder/build_results"
 require "relspec/plan/lock"
@@ -70,7 +71,7 @@ RSpec.describe Relspec::Report::Reading do
   end
 
   def read(ancestor_lock: nil)
-    input = described_class::Input.new(target: target, dir: @dir, plan: plan, results: results)
+    input = Relspec::TargetBuild.new(target: target, dir: @dir, plan: plan, results: results)
     # the diff counts commits with git, which a unit test does not run: nothing to count here
     counter = Struct.new(:none) { def count(*) = nil }.new
     described_class.new(lock: child_lock, inputs: [input], ancestor: "base", ancestor_lock: ancestor_lock,
