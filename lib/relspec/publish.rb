@@ -62,6 +62,7 @@ module Relspec
         # failures too): its inputs read before the repository is touched,
         # so that a damaged one stops the publication, not half of it.
         page, logs = Report.read(path, out: out)
+        Report.check(logs, File.join(repository, REPORT_DIR), "html")
         result = include_and_render(locked, tree, effective, repository, all, selected, waiting: waiting,
                                                                                         explicit: !target.nil?)
         result.report = Report.write(page, logs, File.join(repository, REPORT_DIR), "html")
@@ -95,6 +96,7 @@ module Relspec
       sign_with = effective.repository.sign_with
       SigningKey.check(sign_with) if sign_with
       config = RepositoryConfig.new(release: effective.release, targets: all, sign_with: sign_with)
+      results.each { |target, read| Abi::PublishedDumps.check(repository, target, read.built) if read }
       RepositoryLock.hold(repository, waiting: waiting) do
         stale_lock, recovered, targets = transaction(repository, waiting: waiting) do |dirs, recovered_now|
           include_targets(repository, dirs, config, results, uploads, export: recovered_now == :abandoned)
