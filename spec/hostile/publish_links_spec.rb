@@ -96,4 +96,17 @@ RSpec.describe "relspec publish over links it did not make", order: :defined do
     expect(File.read(File.join(outside, dump))).to eq("the user's own file\n")
     expect_nothing_published
   end
+
+  it "refuses an osdeps/ of the repository that is a link, and overwrites nothing of its folder" do
+    File.write(File.join(outside, "ln-amd64.yml"), "the user's own file\n")
+    FileUtils.mkdir_p(repository)
+    File.symlink(outside, File.join(repository, "osdeps"))
+    run = publish
+    expect([run.exit_code, run.stdout]).to eq([1, ""])
+    expect(run.stderr).to eq("relspec: error: #{repository}/osdeps is a symbolic link (to #{outside}): publish writes " \
+                             "its osdeps files only inside #{repository} and never through a link; remove the link " \
+                             "and publish again\n")
+    expect(File.read(File.join(outside, "ln-amd64.yml"))).to eq("the user's own file\n")
+    expect(Dir.children(repository)).to eq(["osdeps"])
+  end
 end
