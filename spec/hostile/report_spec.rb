@@ -31,12 +31,7 @@ RSpec.describe "relspec report over hostile logs and folders" do
   let(:shown_report) { "out/demo-child/report" }
 
   def demo_child_failed
-    FileUtils.mkdir_p(File.join(@root, "specs"))
-    %w[demo-base demo-child].each do |release|
-      FileUtils.cp(File.join(CliRunner::ROOT, "specs", "#{release}.yml"), File.join(@root, "specs"))
-      FileUtils.mkdir_p(File.join(@root, "releases", release))
-      CommittedReleases.copy("#{release}/lock.yml", File.join(@root, "releases", release, "lock.yml"))
-    end
+    CommittedReleases.project(@root, %w[demo-base demo-child])
     FileUtils.mkdir_p(File.dirname(log))
     File.write(log, "$ dpkg-buildpackage\nCMake Error at CMakeLists.txt:3 (message):\n  types are broken\n")
     File.write(File.join(target, "build-results.yml"), <<~YAML)
