@@ -25,7 +25,7 @@ module Relspec
       LABEL = "Label: relspec mirror"
       # What relspec itself writes below the folder (reprepro writes db/,
       # dists/ and pool/): never through a link.
-      OWN = ["conf/distributions", "conf/options", ".relspec-incoming/x"].freeze
+      OWN = ["conf/distributions", "conf/options", ".relspec-incoming"].freeze
 
       module_function
 
