@@ -1,5 +1,6 @@
 # frozen_string_literal: true
 
+require "fileutils"
 require_relative "error"
 require_relative "temporaries"
 
@@ -21,11 +22,26 @@ module Relspec
     end
 
     def write(path, content)
+      stream(path) { |file| file.write(content) }
+    end
+
+    # Copies the file at +source+ to +path+ when their bytes differ, as
+    # #update: streamed, never whole in memory (a build log can be of any
+    # size). The source is opened without following a link. True if written.
+    def copy(path, source)
+      return false if File.file?(path) && FileUtils.compare_file(path, source)
+
+      stream(path) { |file| File.open(source, File::RDONLY | File::NOFOLLOW) { |from| IO.copy_stream(from, file) } }
+      true
+    end
+
+    # Yields the temporary file to write into, then puts it in place.
+    def stream(path)
       dir = File.dirname(path)
       temporary = Temporaries.path(dir, File.basename(path))
       File.open(temporary, File::WRONLY | File::CREAT | File::EXCL, 0o644) do |file|
         file.binmode
-        file.write(content)
+        yield file
         file.fsync
       end
       File.rename(temporary, path)

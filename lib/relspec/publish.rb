@@ -24,6 +24,7 @@ require_relative "publish/locked_release"
 require_relative "publish/held_packages"
 require_relative "report"
 require_relative "abi/published_dumps"
+require_relative "unlinked_path"
 
 module Relspec
   # `relspec publish`: the built packages of a release into its reprepro
@@ -34,6 +35,8 @@ module Relspec
   module Publish
     # The folder of the repository that holds the release's status page.
     REPORT_DIR = "report"
+    # The folder of the repository that holds its osdeps files (Osdeps::Files).
+    OSDEPS_DIR = "osdeps"
 
     # Per target: +published+ the sources included now, +held+ those the
     # repository had already, +left_out+ the failed/skipped entries, +built+
@@ -65,6 +68,7 @@ module Relspec
         # failures too): its inputs read before the repository is touched,
         # so that a damaged one stops the publication, not half of it.
         page, logs = Report.of(resolution, Project.of_spec(path), locked.lock, builds)
+        Report.check(logs, File.join(repository, REPORT_DIR), "html")
         results = results_of(builds.select { |build| selected.include?(build.target) }, tree, explicit: !target.nil?)
         result = include_and_render(locked, results, effective, repository, all, waiting: waiting)
         result.report = Report.write(page, logs, File.join(repository, REPORT_DIR), "html")
@@ -93,6 +97,7 @@ module Relspec
       sign_with = effective.repository.sign_with
       SigningKey.check(sign_with) if sign_with
       config = RepositoryConfig.new(release: effective.release, targets: all, sign_with: sign_with)
+      check_links(repository, results)
       RepositoryLock.hold(repository, waiting: waiting) do
         stale_lock, recovered, targets = transaction(repository, waiting: waiting) do |dirs, recovered_now|
           include_targets(repository, dirs, config, results, uploads, export: recovered_now == :abandoned)
@@ -102,6 +107,17 @@ module Relspec
         Result.new(release: effective.release, repository: repository, targets: targets, osdeps_written: written,
                    osdeps_missing: missing, stale_lock: stale_lock, recovered: recovered)
       end
+    end
+
+    # Nothing publish writes beside the apt repository (the ABI dumps, the
+    # osdeps files) goes through a link it did not make: into the folder it
+    # leads to, it would overwrite that folder's files. Asked before the
+    # repository is touched.
+    def self.check_links(repository, results)
+      results.each { |target, read| Abi::PublishedDumps.check(repository, target, read.built) if read }
+      UnlinkedPath.check(repository, OSDEPS_DIR, error: PublishError,
+                                                 why: "publish writes its osdeps files only inside #{repository} and " \
+                                                      "never through a link; remove the link and publish again")
     end
 
     # Per target, the Upload of each built package (none when unbuilt),
@@ -206,10 +222,11 @@ module Relspec
       reader = Apt::Opening.repository(entry, repository)
       own = Plan::OwnRepository.read(reader, Target.all(effective))
       listing = HeldPackages.list(locked.lock, own: own, inventory: locked.inventory)
-      written = Osdeps::Files.write_release(listing.targets, effective, File.join(repository, "osdeps"))
+      written = Osdeps::Files.write_release(listing.targets, effective, File.join(repository, OSDEPS_DIR))
       [written.changed_count, listing.missing]
     end
-    private_class_method :uploads, :transaction, :repository_path, :results_of, :include_targets, :write_config, :write_osdeps,
+    private_class_method :check_links, :uploads, :transaction, :repository_path, :results_of, :include_targets, :write_config,
+                         :write_osdeps,
                          :write_abi_dumps
   end
 end

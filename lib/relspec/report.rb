@@ -1,11 +1,9 @@
 # frozen_string_literal: true
 
-require "fileutils"
 require_relative "release_specs"
 require_relative "project"
 require_relative "output_tree"
 require_relative "target"
-require_relative "atomic_file"
 require_relative "error"
 require_relative "plan/lock_parser"
 require_relative "target_build"
@@ -13,6 +11,7 @@ require_relative "report/reading"
 require_relative "report/html_renderer"
 require_relative "report/json_renderer"
 require_relative "report/abi_summary"
+require_relative "report/folder"
 
 module Relspec
   # `relspec report` (and `relspec publish`, next to the repository): a
@@ -22,7 +21,6 @@ module Relspec
   module Report
     FORMATS = %w[html json].freeze
     FILES = { "html" => "index.html", "json" => "report.json" }.freeze
-    LOGS = "logs"
 
     module_function
 
@@ -70,20 +68,17 @@ module Relspec
     end
 
     # Writes +page+ as FILES[format] into +dir+ with a copy of each log it
-    # links to (logs no longer linked are removed). Returns the file's path.
+    # links to (logs no longer linked are removed; Folder). Returns the
+    # file's path.
     def write(page, logs, dir, format)
-      logs.each do |link, file|
-        FileUtils.mkdir_p(File.dirname(File.join(dir, link)))
-        AtomicFile.update(File.join(dir, link), File.binread(file))
-      end
-      FileUtils.mkdir_p(dir)
-      Dir.glob("**/*", base: File.join(dir, LOGS)).each do |name|
-        file = File.join(dir, LOGS, name)
-        FileUtils.rm_f(file) if File.file?(file) && !logs.key?(File.join(LOGS, name))
-      end
-      path = File.join(dir, FILES.fetch(format))
-      AtomicFile.update(path, format == "json" ? JsonRenderer.render(page) : HtmlRenderer.new.render(page))
-      path
+      text = format == "json" ? JsonRenderer.render(page) : HtmlRenderer.new.render(page)
+      Folder.new(dir).write(text, logs, FILES.fetch(format))
+    end
+
+    # Raises naming a link in +dir+ that #write of +logs+ in +format+
+    # would go through: publish asks before it touches the repository.
+    def check(logs, dir, format)
+      Folder.new(dir).check(logs, FILES.fetch(format))
     end
   end
 end

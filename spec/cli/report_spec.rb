@@ -29,12 +29,7 @@ RSpec.describe "relspec report" do
   # dump: base/types's type registry (compared by relspec abi's own code,
   # no abidiff needed), whose /base/Time grew a field since demo-base.
   def demo_child_built(root, registry)
-    FileUtils.mkdir_p(File.join(root, "specs"))
-    %w[demo-base demo-child].each do |release|
-      FileUtils.cp(File.join(CliRunner::ROOT, "specs", "#{release}.yml"), File.join(root, "specs"))
-      FileUtils.mkdir_p(File.join(root, "releases", release))
-      CommittedReleases.copy("#{release}/lock.yml", File.join(root, "releases", release, "lock.yml"))
-    end
+    CommittedReleases.project(root, %w[demo-base demo-child])
     target = File.join(root, "out", "demo-child", "bookworm-amd64")
     dump = gzip(File.join(target, "results", "rock-demo-child-base-types", "base.tlb.abi.xml.gz"), registry)
     File.write(File.join(target, "build-results.yml"), <<~YAML)

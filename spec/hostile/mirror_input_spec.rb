@@ -51,6 +51,43 @@ RSpec.describe "relspec mirror with bad input" do
     expect(run.stderr).to include("#{fake}/mirror.yml: ../../etc/amd64 is not a target name")
   end
 
+  # Issue 46, case 5: --out naming a folder relspec did not make. The
+  # release's own reprepro repository (a real one) and a folder with only a
+  # conf/ are refused before anything is written; an empty folder is
+  # adopted (the run then stops at the hostile index, as below).
+  it "refuses to make a mirror in a folder it did not make, a reprepro repository included, and changes nothing" do
+    repository = File.join(@dir, "repo")
+    before = Dir.glob("**/*", base: repository).sort.to_h do |name|
+      path = File.join(repository, name)
+      [name, File.file?(path) ? File.binread(path) : :folder]
+    end
+    run = relspec("mirror", "specs/h.yml", "--out", "repo", chdir: @dir)
+    expect([run.exit_code, run.stdout]).to eq([1, ""])
+    expect(run.stderr).to eq("relspec: error: --out repo is not a mirror relspec made (it holds .debs, conf, db, … and " \
+                             "no .relspec-mirror): relspec mirror makes a mirror in a new or empty folder and changes " \
+                             "only the mirrors it made; choose another --out\n")
+    after = Dir.glob("**/*", base: repository).sort.to_h do |name|
+      path = File.join(repository, name)
+      [name, File.file?(path) ? File.binread(path) : :folder]
+    end
+    expect(after).to eq(before)
+    expect(system("reprepro", "-b", repository, "check", out: File::NULL, err: File::NULL)).to be(true)
+
+    conf_only = File.join(@dir, "conf-only")
+    FileUtils.mkdir_p(File.join(conf_only, "conf"))
+    File.write(File.join(conf_only, "conf", "distributions"), "Codename: mine\n")
+    run = relspec("mirror", "specs/h.yml", "--out", "conf-only", chdir: @dir)
+    expect([run.exit_code, run.stderr]).to match([1, start_with("relspec: error: --out conf-only is not a mirror relspec made (it holds conf and")])
+    expect(Dir.children(conf_only)).to eq(["conf"])
+    expect(File.read(File.join(conf_only, "conf", "distributions"))).to eq("Codename: mine\n")
+
+    empty = File.join(@dir, "empty")
+    FileUtils.mkdir_p(empty)
+    run = relspec("mirror", "specs/h.yml", "--out", "empty", chdir: @dir)
+    expect([run.exit_code, run.stderr]).to match([1, include("is not a pool path")])
+    expect(File.file?(File.join(empty, ".relspec-mirror"))).to be(true)
+  end
+
   it "refuses an index whose Filename leaves the pool, before anything is fetched or written" do
     out = File.join(@dir, "mirror")
     run = relspec("mirror", "specs/h.yml", "--out", out, chdir: @dir)

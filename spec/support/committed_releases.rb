@@ -1,5 +1,6 @@
 # frozen_string_literal: true
 
+require "fileutils"
 require "open3"
 
 # The demo's releases/ as committed. bin/test's examples process runs
@@ -14,6 +15,17 @@ module CommittedReleases
     raise "releases/#{path} is not committed: #{errors}" unless status.success?
 
     text
+  end
+
+  # A project in +root+ with the demo's specs of +releases+ and their
+  # committed locks.
+  def self.project(root, releases)
+    FileUtils.mkdir_p(File.join(root, "specs"))
+    releases.each do |release|
+      FileUtils.cp(File.join(CliRunner::ROOT, "specs", "#{release}.yml"), File.join(root, "specs"))
+      FileUtils.mkdir_p(File.join(root, "releases", release))
+      copy("#{release}/lock.yml", File.join(root, "releases", release, "lock.yml"))
+    end
   end
 
   # Writes the committed releases/+path+ to +target+; +target+.

@@ -5,6 +5,8 @@ require "fileutils"
 require "yaml"
 require_relative "../atomic_file"
 require_relative "../display_path"
+require_relative "../error"
+require_relative "../unlinked_path"
 require_relative "../yaml/located_document"
 require_relative "../yaml/field_reader"
 require_relative "dumper"
@@ -50,6 +52,7 @@ module Relspec
       # something changed. Dumps of sources not built now are kept (an
       # earlier publish of the same release).
       def self.write(repository, target, target_dir, records)
+        check(repository, target, records)
         dir = dir(repository, target)
         known = read(repository, target).entries.to_h do |entry|
           [[entry.source, entry.library], entry.dup.tap { |kept| kept.file = entry.file.delete_prefix("#{dir}/") }]
@@ -71,6 +74,24 @@ module Relspec
         return false if known.empty? && !File.exist?(index)
 
         AtomicFile.update(index, render(known.values))
+      end
+
+      # Raises PublishError naming a symbolic link on the way to a file
+      # #write of +records+ would write (abi/, the target's folder, its
+      # index, a source's folder, a dump): through it publish would
+      # overwrite the files of a folder it did not make. Publish asks
+      # before it touches the repository.
+      def self.check(repository, target, records)
+        base = File.join("abi", target.dir_name)
+        dumps = records.flat_map do |record|
+          record.files.select { |file| Dumper.library_of(file.name) }
+                .map { |file| File.join(base, record.source, File.basename(file.name)) }
+        end
+        why = "publish writes the ABI dumps only inside #{dir(repository, target)} and never through a link; " \
+              "remove the link and publish again"
+        [File.join(base, FILE_NAME), *dumps].each do |relative|
+          UnlinkedPath.check(repository, relative, why: why, error: PublishError)
+        end
       end
 
       def self.render(entries)

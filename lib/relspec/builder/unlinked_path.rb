@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require_relative "../error"
+require_relative "../unlinked_path"
 
 module Relspec
   module Builder
@@ -13,18 +14,11 @@ module Relspec
       module_function
 
       # +relative+ below +base+; raises BuildError naming the first link
-      # on the way (existing parts only: what is missing is made later,
-      # by relspec, as a plain folder or file). Returns the joined path.
+      # on the way (Relspec::UnlinkedPath). Returns the joined path.
       def check(base, relative)
-        path = base
-        relative.split("/").each do |part|
-          path = File.join(path, part)
-          next unless File.symlink?(path)
-
-          raise BuildError, "#{path} is a symbolic link (to #{File.readlink(path)}): a build writes only inside " \
-                            "#{base} and never through a link; remove the link and build again"
-        end
-        File.join(base, relative)
+        Relspec::UnlinkedPath.check(base, relative, error: BuildError,
+                                                    why: "a build writes only inside #{base} and never through a " \
+                                                         "link; remove the link and build again")
       end
     end
   end

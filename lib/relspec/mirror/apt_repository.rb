@@ -6,14 +6,15 @@ require "open3"
 require_relative "../atomic_file"
 require_relative "../error"
 require_relative "binary_index"
+require_relative "folder"
 
 module Relspec
   module Mirror
     # The mirror's own apt repository, made and changed with reprepro: one
     # distribution per codename with the mirrored architectures; packages
     # go in and out by name, the pool only through reprepro. The mirror's
-    # folder holds nothing else of relspec's but mirror.yml, VERIFIED.md,
-    # the sources snippets and the public key.
+    # folder holds nothing else of relspec's but its marker (Folder),
+    # mirror.yml, VERIFIED.md, the sources snippets and the public key.
     class AptRepository
       attr_reader :dir
 
@@ -24,7 +25,10 @@ module Relspec
         @sign_with = sign_with
       end
 
+      # Takes the folder (Folder: one relspec made, never someone else's)
+      # and writes reprepro's configuration.
       def configure
+        Folder.claim(@dir)
         conf = File.join(@dir, "conf")
         FileUtils.mkdir_p(conf)
         AtomicFile.write(File.join(conf, "distributions"), distributions)

@@ -3,6 +3,7 @@
 require_relative "page"
 require_relative "first_error"
 require_relative "critical_path"
+require_relative "../unlinked_path"
 require_relative "../diff/lock_view"
 require_relative "../diff/release_diff"
 require_relative "../diff/commit_counter"
@@ -15,6 +16,12 @@ module Relspec
     # (first error lines) and, when there is one, the ancestor's lock (the
     # changes, by the diff's own comparison).
     class Reading
+      # A log read through a link (the log, logs/ or a folder on its way)
+      # could put any file of this machine on the page and next to a
+      # published repository: refused, as a build refuses to write one.
+      LINKED_LOG = "the report reads a build's logs only inside %s, never through a link; remove the link and " \
+                   "build again"
+
       # +lock+, +ancestor_lock+: Plan::Lock (the latter nil when there is
       # none); +ancestor+: its release; +inputs+: TargetBuild per target; +abi+:
       # target name => AbiSummary (a target without one shows no verdicts).
@@ -56,9 +63,8 @@ module Relspec
 
       def cell(input, package, entry, planned, record, blocked, logs)
         source = record&.source || planned&.source
-        log = record&.log && File.join(input.dir, record.log)
-        # a symbolic link could put any file of this machine next to a published repository
-        link = log && File.file?(log) && !File.symlink?(log) ? "logs/#{input.target.dir_name}/#{File.basename(log)}" : nil
+        log = record&.log && UnlinkedPath.check(input.dir, record.log, why: LINKED_LOG % input.dir)
+        link = log && File.file?(log) ? "logs/#{input.target.dir_name}/#{File.basename(log)}" : nil
         logs[link] = log if link
         failed = record&.status == "failed"
         Cell.new(package: package, source: source, decision: entry.decision, from: entry.from, version: entry.version,

@@ -64,6 +64,25 @@ RSpec.describe Relspec::Abi::PublishedDumps do
     expect(File.exist?(File.join(@dir, "repo", "abi"))).to be(false)
   end
 
+  it "refuses to write through a source's folder, the target's folder or abi/ that is a link, and writes nothing" do
+    repo = File.join(@dir, "repo")
+    outside = File.join(@dir, "outside")
+    FileUtils.mkdir_p(outside)
+    File.write(File.join(outside, "liba.so.abi.xml.gz"), "mine")
+    records = [record("rock-r-a", "a", "results/rock-r-a/liba.so.abi.xml.gz" => "a1")]
+    ["abi", "abi/bookworm-amd64", "abi/bookworm-amd64/rock-r-a"].each do |link|
+      FileUtils.rm_rf(File.join(repo, "abi"))
+      FileUtils.mkdir_p(File.dirname(File.join(repo, link)))
+      File.symlink(outside, File.join(repo, link))
+      expect { described_class.write(repo, target, File.join(@dir, "out"), records) }
+        .to raise_error(Relspec::PublishError, "#{repo}/#{link} is a symbolic link (to #{outside}): publish writes the " \
+                                               "ABI dumps only inside #{repo}/abi/bookworm-amd64 and never through a " \
+                                               "link; remove the link and publish again")
+      expect(Dir.children(outside)).to eq(["liba.so.abi.xml.gz"])
+      expect(File.read(File.join(outside, "liba.so.abi.xml.gz"))).to eq("mine")
+    end
+  end
+
   it "is empty for a repository without dumps" do
     expect(described_class.read(File.join(@dir, "none"), target).entries).to eq([])
   end

@@ -32,12 +32,29 @@ RSpec.describe Relspec::Report::FirstError do
     expect(line).to end_with("…")
   end
 
+  it "reads a log as a stream: the rest of an overlong line is skipped, nothing past MAX_BYTES is read" do
+    stub_const("#{described_class}::MAX_LINE_BYTES", 16)
+    stub_const("#{described_class}::MAX_BYTES", 64)
+    # the tail of a 40-byte line is not a line of its own
+    expect(described_class.of_text("#{'x' * 30} error: tail\nok\n")).to be_nil
+    expect(described_class.of_text("#{'x' * 30}\nerror: here\n")).to eq("error: here")
+    expect(described_class.of_text("#{"ok\n" * 21}error: past the bound\n")).to be_nil
+  end
+
+  it "forgets an error a later command answered, and collects at most MAX_CONTINUATION lines" do
+    expect(described_class.of_text("$ a\nerror: one\n  more\n$ b\nfine\nerror: two\n")).to eq("error: two")
+    text = described_class.of_text("error: x\n#{(1..6).map { |n| "  #{n}\n" }.join}")
+    expect(text).to eq("error: x\n1\n2\n3\n4")
+  end
+
   it "reads a log file, and nil for none" do
     Dir.mktmpdir do |dir|
       File.write(File.join(dir, "a.log"), "fatal error: x.h: No such file\n")
       expect(described_class.of_file(File.join(dir, "a.log"))).to eq("fatal error: x.h: No such file")
       expect(described_class.of_file(File.join(dir, "missing.log"))).to be_nil
       expect(described_class.of_file(nil)).to be_nil
+      File.symlink("a.log", File.join(dir, "link.log"))
+      expect { described_class.of_file(File.join(dir, "link.log")) }.to raise_error(Relspec::Error, /link.log is a symbolic link/)
     end
   end
 end

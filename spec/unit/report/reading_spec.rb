@@ -109,11 +109,14 @@ RSpec.describe Relspec::Report::Reading do
     expect(changes["tools/new"]).to include("change" => "added", "new" => "build 0.2-1")
   end
 
-  it "links no log that is a symbolic link (it could publish any file of the machine)" do
+  it "refuses a log that is a symbolic link, or one below a linked folder, naming the link (it could publish any file)" do
     FileUtils.rm(File.join(@dir, "logs", "rock-types.log"))
     File.symlink("/etc/hostname", File.join(@dir, "logs", "rock-types.log"))
-    page, logs = read
-    expect(logs).to eq({})
-    expect(page.targets.first.cells.find { |cell| cell.package == "base/types" }.log).to be_nil
+    expect { read }.to raise_error(Relspec::Error, "#{@dir}/logs/rock-types.log is a symbolic link (to /etc/hostname): " \
+                                                   "the report reads a build's logs only inside #{@dir}, never through " \
+                                                   "a link; remove the link and build again")
+    FileUtils.mv(File.join(@dir, "logs"), File.join(@dir, "elsewhere"))
+    File.symlink("elsewhere", File.join(@dir, "logs"))
+    expect { read }.to raise_error(Relspec::Error, %r{\A#{@dir}/logs is a symbolic link \(to elsewhere\)})
   end
 end
