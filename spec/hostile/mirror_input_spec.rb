@@ -2,6 +2,8 @@
 
 require "spec_helper"
 require "yaml"
+require "open3"
+require "relspec/mirror/proof"
 
 # `relspec mirror` with bad input (issue 35): the command line, a folder
 # that is not a mirror, a mirror.yml naming a path instead of a target, and
@@ -27,6 +29,39 @@ RSpec.describe "relspec mirror with bad input" do
       distributions:
         bookworm: { archive: { host: true } }
     YAML
+    @mirror = good_mirror
+  end
+
+  # A small good mirror, made offline from local reprepro repositories:
+  # the release g (two packages) and a distribution archive with what they
+  # need and a package nothing needs. Tests tamper with copies of it.
+  def good_mirror
+    release = AptRepositoryBuilder.new(File.join(@dir, "good"), codenames: ["bookworm"], architectures: ["amd64"])
+    release.add("rock-g-one", "1.0-1", codename: "bookworm", arch: "amd64", depends: "libg1 (>= 1.0)")
+    release.add("rock-g-two", "1.0-1", codename: "bookworm", arch: "all", depends: "rock-g-one")
+    debian = AptRepositoryBuilder.new(File.join(@dir, "debian"), codenames: ["bookworm"], architectures: ["amd64"])
+    debian.add("libg1", "1.2-1", codename: "bookworm", arch: "amd64")
+    debian.add("unneeded", "1.0-1", codename: "bookworm", arch: "amd64")
+    File.write(File.join(@dir, "specs", "g.yml"), <<~YAML)
+      release: g
+      workspace: ../ws
+      targets: { bookworm: [amd64] }
+      repository: { path: ../good, trusted: true }
+      distributions:
+        bookworm: { archive: { path: ../debian, trusted: true } }
+    YAML
+    out = File.join(@dir, "good-mirror")
+    run = relspec("mirror", "specs/g.yml", "--out", out, "--no-install", "--quiet", chdir: @dir)
+    raise "the good mirror was not made: #{run.stdout}#{run.stderr}" unless run.exit_code.zero?
+
+    out
+  end
+
+  # A copy of the good mirror to tamper with.
+  def copy_of_mirror(name)
+    copy = File.join(@dir, name)
+    FileUtils.cp_r(@mirror, copy, preserve: true)
+    copy
   end
 
   after(:all) { FileUtils.rm_rf(@dir) }
@@ -48,7 +83,8 @@ RSpec.describe "relspec mirror with bad input" do
     File.write(File.join(fake, "mirror.yml"), YAML.dump("release" => "h", "targets" => { "../../etc/amd64" => { "release" => [] } }))
     run = relspec("mirror", "verify", fake, chdir: @dir)
     expect(run.exit_code).to eq(1)
-    expect(run.stderr).to include("#{fake}/mirror.yml: ../../etc/amd64 is not a target name")
+    expect(run.stderr).to include("#{fake}/mirror.yml:5:5: error[mirror-manifest]: cannot read mirror.yml: " \
+                                  "\"../../etc/amd64\" is not a target name")
   end
 
   it "refuses an index whose Filename leaves the pool, before anything is fetched or written" do
@@ -57,5 +93,41 @@ RSpec.describe "relspec mirror with bad input" do
     expect(run.exit_code).to eq(1)
     expect(run.stderr).to match(%r{\Arelspec: error: .*repo \(bookworm/main/binary-amd64\), stanza 1 \(rock-h-one\): Filename "../../../etc/hostile.deb" is not a pool path\n\z})
     expect(Dir.exist?(File.join(out, "pool"))).to be(false)
+  end
+
+  # issue 46, case 1: mirror.yml comes with the disk; a package name that
+  # apt would read as an option is refused at its line before apt, dose or
+  # anything else of the mirror runs.
+  it "refuses a mirror.yml whose package name is an apt option, at its line, and runs nothing" do
+    mirror = copy_of_mirror("option")
+    marker = File.join(@dir, "option-ran")
+    manifest = File.join(mirror, "mirror.yml")
+    File.write(manifest, File.read(manifest).sub("- rock-g-two", "- \"-oDPkg::Pre-Invoke::=touch #{marker}\""))
+    line = File.read(manifest).lines.index { |text| text.include?("Pre-Invoke") } + 1
+    [[], ["--no-install"]].each do |options|
+      run = relspec("mirror", "verify", mirror, *options, chdir: @dir)
+      expect([run.exit_code, run.stdout]).to eq([1, ""])
+      expect(run.stderr).to start_with("#{manifest}:#{line}:7: error[mirror-manifest]: cannot read mirror.yml: " \
+                                       "\"-oDPkg::Pre-Invoke::=touch #{marker}\" is not a Debian package name")
+    end
+    expect(File.exist?(marker)).to be(false)
+  end
+
+  # The dynamic proof's install hook, as mmdebstrap runs it (sh -c, the
+  # chroot as $1), with apt-get stood in by a recorder of its arguments (the
+  # real one needs a chroot with a minimal system: the mirror CI test runs
+  # it): whatever the names, they come after "--" and are not globbed.
+  it "has apt install the release's packages after --" do
+    bin = File.join(@dir, "recorder")
+    FileUtils.mkdir_p(bin)
+    File.write(File.join(bin, "apt-get"), "#!/bin/sh\nprintf '%s\\n' \"$@\" > \"$RECORD\"\n")
+    File.chmod(0o755, File.join(bin, "apt-get"))
+    record = File.join(@dir, "recorded")
+    environment = { "PATH" => "#{bin}:#{ENV.fetch('PATH')}", "RECORD" => record, "MMDEBSTRAP_APT_CONFIG" => "/dev/null",
+                    Relspec::Mirror::Proof::PACKAGES_VARIABLE => "-oDPkg::Pre-Invoke::=true rock-g-* rock-g-one" }
+    _, status = Open3.capture2e(environment, "sh", "-c", Relspec::Mirror::Proof::INSTALL_HOOK, "sh", "/chroot", chdir: @dir)
+    expect(status).to be_success
+    expect(File.read(record).lines.map(&:chomp))
+      .to eq(["--yes", "-oDPkg::Chroot-Directory=/chroot", "install", "--", "-oDPkg::Pre-Invoke::=true", "rock-g-*", "rock-g-one"])
   end
 end

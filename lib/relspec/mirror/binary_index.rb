@@ -4,6 +4,7 @@ require_relative "../apt/packages_scanner"
 require_relative "../apt/version"
 require_relative "../apt/dependency"
 require_relative "../error"
+require_relative "../osdeps/trust"
 
 module Relspec
   module Mirror
@@ -39,7 +40,6 @@ module Relspec
     class BinaryIndex
       FIELDS = %w[Package Version Architecture Depends Pre-Depends Provides Filename SHA256 Size Essential
                   Priority].freeze
-      NAME = /\A[a-z0-9][a-z0-9.+-]+\z/
       # pool paths as archives write them: no "..", no absolute path, no
       # characters a shell or reprepro would read otherwise
       FILENAME = %r{\A(?!/)(?!.*(?:\A|/)\.\.?(?:/|\z))[A-Za-z0-9._+~%/-]+\.u?deb\z}
@@ -110,7 +110,8 @@ module Relspec
         filename = stanza["Filename"].to_s
         sha256 = stanza["SHA256"].to_s
         size = stanza["Size"].to_s
-        raise Invalid, "#{where}: #{name.inspect} is not a Debian package name" unless NAME.match?(name)
+        reason = Osdeps::Trust.debian_name(name)
+        raise Invalid, "#{where}: #{reason}" if reason
         raise Invalid, "#{where} (#{name}): invalid Version #{version.inspect}" unless Apt::Version.valid?(version)
         raise Invalid, "#{where} (#{name}): Filename #{filename.inspect} is not a pool path" unless FILENAME.match?(filename)
         raise Invalid, "#{where} (#{name}): no SHA256 checksum" unless SHA256.match?(sha256)
