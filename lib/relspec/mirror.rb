@@ -15,6 +15,7 @@ require_relative "mirror/download"
 require_relative "mirror/proof"
 require_relative "mirror/report"
 require_relative "mirror/manifest"
+require_relative "mirror/integrity"
 
 module Relspec
   # `relspec mirror SPEC --out DIR`: a field mirror of a release. Everything
@@ -53,9 +54,10 @@ module Relspec
       write(repository, manifest, key, Report.new(effective.release, reports))
     end
 
-    # Checks the mirror in +dir+ again from its own files: every file its
-    # indices list is there with the listed size and SHA256, and both
-    # proofs pass.
+    # Checks the mirror in +dir+ again from its own files: its indices
+    # against their Release files and its pool against its indices, both
+    # ways (Integrity; every file the indices list is there with the listed
+    # size and SHA256), and both proofs pass.
     def self.verify(dir, install: true)
       manifest = Manifest.read(dir)
       repository = AptRepository.new(dir, targets: manifest.targets.keys)
@@ -67,7 +69,7 @@ module Relspec
         Report::TargetReport.new(target: target, counts: counts, changes: nil, missing: missing_files(repository, index),
                                  checks: prove(repository, target, seeds, key, install: install))
       end
-      Report.new(manifest.release, reports)
+      Report.new(manifest.release, reports, files: Integrity.new(repository, manifest.targets.keys, key: key).check)
     end
 
     def self.fill(repository, read, target, progress)

@@ -3,6 +3,7 @@
 require "spec_helper"
 require "yaml"
 require "open3"
+require "zlib"
 require "relspec/mirror/proof"
 
 # `relspec mirror` with bad input (issue 35): the command line, a folder
@@ -129,5 +130,45 @@ RSpec.describe "relspec mirror with bad input" do
     expect(status).to be_success
     expect(File.read(record).lines.map(&:chomp))
       .to eq(["--yes", "-oDPkg::Chroot-Directory=/chroot", "install", "--", "-oDPkg::Pre-Invoke::=true", "rock-g-*", "rock-g-one"])
+  end
+
+  # issue 46, case 11: verify checks every index against its Release file,
+  # the forms of an index against each other (an unsigned mirror's Release
+  # file can be rewritten too), and the pool against the indices both ways.
+  it "finds a stanza dropped from Packages.gz, with or without the Release file rewritten to match" do
+    mirror = copy_of_mirror("dropped")
+    gz = File.join(mirror, "dists", "bookworm", "main", "binary-amd64", "Packages.gz")
+    stanzas = Zlib.gunzip(File.binread(gz)).split("\n\n")
+    dropped = Zlib.gzip("#{stanzas.reject { |stanza| stanza.start_with?("Package: rock-g-two\n") }.join("\n\n")}\n")
+    File.binwrite(gz, dropped)
+    run = relspec("mirror", "verify", mirror, "--no-install", chdir: @dir)
+    expect(run.exit_code).to eq(1)
+    expect(run.stdout).to include("bookworm/amd64: NOT complete", "\nfiles: failed (",
+                                  "\n  dists/bookworm/main/binary-amd64/Packages.gz does not match the SHA256 of the Release file")
+
+    ReleaseFileEditor.replace_index(mirror, "bookworm", "main/binary-amd64/Packages.gz", dropped)
+    run = relspec("mirror", "verify", mirror, "--no-install", chdir: @dir)
+    expect(run.exit_code).to eq(1)
+    expect(run.stdout).to include("\n  dists/bookworm/main/binary-amd64/Packages.gz does not hold the packages of " \
+                                  "Packages (without rock-g-two)\n")
+  end
+
+  it "finds pool files no index names, index entries whose file differs, and index files no Release file lists" do
+    mirror = copy_of_mirror("extra")
+    verified = relspec("mirror", "verify", mirror, "--no-install", chdir: @dir)
+    expect([verified.exit_code, verified.stdout]).to match([0, /^files: passed \(\d+ index files checked against their Release file \(size, SHA256\), 3 pool files against the indices\)$/])
+
+    FileUtils.mkdir_p(File.join(mirror, "pool", "main", "e", "extra"))
+    File.write(File.join(mirror, "pool", "main", "e", "extra", "extra_1.0_amd64.deb"), "not a package")
+    File.write(File.join(mirror, "dists", "bookworm", "main", "binary-amd64", "Packages.xz"), "")
+    FileUtils.mkdir_p(File.join(mirror, "dists", "sid"))
+    one = Dir.glob(File.join(mirror, "pool", "**", "rock-g-one_*.deb")).first
+    File.write(one, "x", mode: "ab")
+    run = relspec("mirror", "verify", mirror, "--no-install", chdir: @dir)
+    expect(run.exit_code).to eq(1)
+    expect(run.stdout).to include("\n  missing: #{one.delete_prefix("#{mirror}/")} (rock-g-one 1.0-1) is damaged (needed by rock-g-two)\n",
+                                  "\n  dists/bookworm/main/binary-amd64/Packages.xz is not listed in the Release file\n",
+                                  "\n  dists/sid is the distribution of no target of mirror.yml\n",
+                                  "\n  pool/main/e/extra/extra_1.0_amd64.deb is in the pool but no index names it\n")
   end
 end
