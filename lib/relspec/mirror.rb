@@ -92,7 +92,17 @@ module Relspec
                   "kept" => wanted.size - add.size }
       missing = closure.missing.map(&:to_s).sort
       [target, read.seeds.select { |name| closure.binaries.key?(name) }.sort,
-       Report::TargetReport.new(target: target, counts: counts, changes: changes, missing: missing, checks: [])]
+       Report::TargetReport.new(target: target, counts: counts, changes: changes, missing: missing, checks: [],
+                                pinned: pinned(read.index, closure))]
+    end
+
+    # The release's packages the mirror holds although the distribution
+    # has a higher version of their name (BinaryIndex#pinned).
+    def self.pinned(index, closure)
+      index.pinned.select { |pin| closure.binaries.key?(pin.kept.name) }.map do |pin|
+        "#{pin.kept} of #{pin.kept.origin.label} is kept; the distribution's #{pin.shadowed.version} " \
+          "(#{pin.shadowed.origin.label}) is not mirrored"
+      end
     end
 
     def self.counts(closure, read)

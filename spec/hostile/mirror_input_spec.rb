@@ -171,4 +171,24 @@ RSpec.describe "relspec mirror with bad input" do
                                   "\n  dists/sid is the distribution of no target of mirror.yml\n",
                                   "\n  pool/main/e/extra/extra_1.0_amd64.deb is in the pool but no index names it\n")
   end
+
+  # issue 46, case 12: the distribution has a package of the release's name
+  # in a higher version. The mirror is of the release as published: the
+  # release's package stays, and the report says which one was pinned.
+  it "keeps the release's package over a distribution's higher version of its name, and says so" do
+    shadowing = AptRepositoryBuilder.new(File.join(@dir, "debian-shadowing"), codenames: ["bookworm"], architectures: ["amd64"])
+    shadowing.add("libg1", "1.2-1", codename: "bookworm", arch: "amd64")
+    shadowing.add("rock-g-one", "9.0-1", codename: "bookworm", arch: "amd64")
+    FileUtils.mkdir_p(File.join(@dir, "shadowed"))
+    File.write(File.join(@dir, "shadowed", "g.yml"),
+               File.read(File.join(@dir, "specs", "g.yml")).sub("path: ../debian,", "path: ../debian-shadowing,"))
+    out = File.join(@dir, "shadowed-mirror")
+    run = relspec("mirror", "shadowed/g.yml", "--out", out, "--no-install", "--quiet", chdir: @dir)
+    expect(run.exit_code).to eq(0), run.stdout + run.stderr
+    expect(run.stdout).to include("bookworm/amd64: complete", "\n  pinned: rock-g-one 1.0-1 of g is kept; the distribution's " \
+                                                              "9.0-1 (bookworm) is not mirrored\n")
+    packages = File.read(File.join(out, "dists", "bookworm", "main", "binary-amd64", "Packages"))
+    expect(packages.scan(/^Package: rock-g-one\nVersion: (.*)$/)).to eq([["1.0-1"]])
+    expect(File.read(File.join(out, "VERIFIED.md"))).to include("- pinned: rock-g-one 1.0-1 of g is kept")
+  end
 end

@@ -13,8 +13,10 @@ module Relspec
       include RenderedFormats
 
       # +counts+: Hash of what the closure holds; +changes+: added/removed
-      # (nil for verify); +missing+: lines; +checks+: Proof::Check.
-      TargetReport = Struct.new(:target, :counts, :changes, :missing, :checks, keyword_init: true) do
+      # (nil for verify); +missing+: lines; +checks+: Proof::Check;
+      # +pinned+: lines, the release's packages kept over the distribution's
+      # higher versions (nil for verify: the mirror holds one version only).
+      TargetReport = Struct.new(:target, :counts, :changes, :missing, :checks, :pinned, keyword_init: true) do
         def complete?
           missing.empty? && checks.none? { |check| check.status == "failed" } &&
             checks.any? { |check| check.name == "static" && check.passed? }
@@ -40,7 +42,7 @@ module Relspec
         { "release" => release, "complete" => complete?,
           "targets" => targets.to_h do |one|
             [one.target.to_s, { "complete" => complete_target?(one), "packages" => one.counts, "changes" => one.changes,
-                                "missing" => one.missing, "checks" => one.checks.to_h { |check| check_h(check) } }]
+                                "missing" => one.missing, "pinned" => one.pinned, "checks" => one.checks.to_h { |check| check_h(check) } }]
           end, "files" => files && check_h(files)[1] }
       end
 
@@ -48,6 +50,7 @@ module Relspec
         lines = targets.flat_map do |one|
           head = ["#{one.target}: #{complete_target?(one) ? 'complete' : 'NOT complete'} — #{summary(one.counts)}"]
           head << "  changes: #{change_text(one.changes)}" if one.changes
+          head.concat(Array(one.pinned).map { |line| "  pinned: #{line}" })
           head + one.missing.map { |line| "  missing: #{line}" } +
             one.checks.flat_map do |check|
               ["  #{check.name} proof: #{check.status} (#{check.detail})", *check.problems.map { |line| "    #{line}" }]
@@ -64,8 +67,9 @@ module Relspec
               check.problems.map { |line| "\n  - #{line}" }.join
           end
           missing = one.missing.map { |line| "- missing: #{line}" }
+          pinned = Array(one.pinned).map { |line| "- pinned: #{line}" }
           ["## #{one.target}: #{complete_target?(one) ? 'complete' : 'NOT complete'}", "", "#{summary(one.counts)}.", "",
-           *missing, *checks].join("\n")
+           *pinned, *missing, *checks].join("\n")
         end
         body << ["## Files: **#{files.status}** (#{files.detail})", *files.problems.map { |line| "- #{line}" }].join("\n") if files
         "# Mirror of #{release}\n\nMade and checked by `relspec mirror`; `relspec mirror verify DIR` checks it " \

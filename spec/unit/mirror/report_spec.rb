@@ -50,4 +50,13 @@ RSpec.describe Relspec::Mirror::Report do
       .to eq([false, { "status" => "failed", "detail" => "d", "problems" => ["pool/x.deb is in the pool but no index names it"] }])
     expect(described_class.new("r", [target_report], files: check("files", "passed"))).to be_complete
   end
+
+  it "says which of the release's packages were kept over the distribution's higher versions" do
+    one = described_class::TargetReport.new(**target_report.to_h, pinned: ["rock-a 1.0 of r is kept; the distribution's 9.0 (bookworm) is not mirrored"])
+    report = described_class.new("r", [one])
+    expect(report).to be_complete
+    expect(report.text.lines[1]).to eq("  pinned: rock-a 1.0 of r is kept; the distribution's 9.0 (bookworm) is not mirrored\n")
+    expect(report.markdown).to include("\n- pinned: rock-a 1.0 of r is kept")
+    expect(JSON.parse(report.render("json")).dig("targets", "bookworm/amd64", "pinned").size).to eq(1)
+  end
 end
