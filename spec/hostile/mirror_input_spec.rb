@@ -5,6 +5,7 @@ require "yaml"
 require "open3"
 require "zlib"
 require "relspec/mirror/proof"
+require_relative "../support/signing_key"
 
 # `relspec mirror` with bad input (issue 35): the command line, a folder
 # that is not a mirror, a mirror.yml naming a path instead of a target, and
@@ -190,5 +191,29 @@ RSpec.describe "relspec mirror with bad input" do
     packages = File.read(File.join(out, "dists", "bookworm", "main", "binary-amd64", "Packages"))
     expect(packages.scan(/^Package: rock-g-one\nVersion: (.*)$/)).to eq([["1.0-1"]])
     expect(File.read(File.join(out, "VERIFIED.md"))).to include("- pinned: rock-g-one 1.0-1 of g is kept")
+  end
+
+  # A signed mirror (repository.sign_with) is checked with its own key: a
+  # Release file changed after signing is refused, not read.
+  it "checks a signed mirror's Release file with the mirror's key" do
+    home = File.join(@dir, "gnupg")
+    FileUtils.mkdir_p(home, mode: 0o700)
+    key = SigningKey.new(home)
+    FileUtils.mkdir_p(File.join(@dir, "signed"))
+    File.write(File.join(@dir, "signed", "g.yml"), File.read(File.join(@dir, "specs", "g.yml"))
+      .sub("repository: { path: ../good, trusted: true }", "repository: { path: ../good, trusted: true, sign_with: #{key.fingerprint} }"))
+    out = File.join(@dir, "signed-mirror")
+    run = relspec("mirror", "signed/g.yml", "--out", out, "--no-install", "--quiet", chdir: @dir, env: key.env)
+    expect(run.exit_code).to eq(0), run.stdout + run.stderr
+    verify = relspec("mirror", "verify", out, "--no-install", chdir: @dir)
+    expect([verify.exit_code, verify.stdout]).to match([0, /^files: passed/])
+
+    in_release = File.join(out, "dists", "bookworm", "InRelease")
+    File.write(in_release, File.read(in_release).sub(/^Label: .*$/, "Label: changed"))
+    verify = relspec("mirror", "verify", out, "--no-install", chdir: @dir)
+    expect(verify.exit_code).to eq(1)
+    expect(verify.stdout).to match(%r{^files: failed .*\n  dists/bookworm/InRelease: signature check failed: BAD signature})
+  ensure
+    key&.stop
   end
 end
