@@ -62,6 +62,7 @@ module Relspec
       manifest = Manifest.read(dir)
       repository = AptRepository.new(dir, targets: manifest.targets.keys)
       key = manifest.key && File.join(repository.dir, manifest.key)
+      files = Integrity.new(repository, manifest.targets.keys, key: key).check
       reports = manifest.targets.map do |target, seeds|
         index = repository.index(target)
         counts = { "total" => index.names.size, "release" => seeds.size,
@@ -69,7 +70,7 @@ module Relspec
         Report::TargetReport.new(target: target, counts: counts, changes: nil, missing: missing_files(repository, index),
                                  checks: prove(repository, target, seeds, key, install: install))
       end
-      Report.new(manifest.release, reports, files: Integrity.new(repository, manifest.targets.keys, key: key).check)
+      Report.new(manifest.release, reports, files: files)
     end
 
     def self.fill(repository, read, target, progress)
