@@ -2,7 +2,6 @@
 
 require "fileutils"
 require "open3"
-require "yaml"
 require_relative "release_specs"
 require_relative "target"
 require_relative "atomic_file"
@@ -15,6 +14,8 @@ require_relative "mirror/apt_repository"
 require_relative "mirror/download"
 require_relative "mirror/proof"
 require_relative "mirror/report"
+require_relative "mirror/manifest"
+require_relative "mirror/integrity"
 
 module Relspec
   # `relspec mirror SPEC --out DIR`: a field mirror of a release. Everything
@@ -26,12 +27,8 @@ module Relspec
   # mirror: adds what is new, drops what nothing needs any more.
   # `relspec mirror verify DIR` checks a mirror again, offline.
   module Mirror
-    MANIFEST = "mirror.yml"
     VERIFIED = "VERIFIED.md"
     INCOMING = ".relspec-incoming"
-
-    # A folder given to `relspec mirror verify` is not a mirror relspec made.
-    class NotAMirror < RepositoryError; end
 
     # +targets+: "codename/arch" strings (empty: every target of the spec);
     # +progress+: an IO for one line per step, or nil.
@@ -47,37 +44,33 @@ module Relspec
       key = sign_with && export_key(sign_with, repository.dir, effective.release)
       made = selected.map { |target| fill(repository, sources.read(target), target, progress) }
       repository.export
-      manifest = made.to_h { |target, seeds, _| [target.to_s, { "release" => seeds }] }
+      manifest = Manifest.new(release: effective.release, key: key && File.basename(key),
+                              targets: made.to_h { |target, seeds, _| [target, seeds] })
       reports = made.map do |target, seeds, report|
         prove(repository, target, seeds, key, install: install).then do |checks|
           Report::TargetReport.new(**report.to_h, checks: checks)
         end
       end
-      write(repository, effective.release, manifest, key, Report.new(effective.release, reports))
+      write(repository, manifest, key, Report.new(effective.release, reports))
     end
 
-    # Checks the mirror in +dir+ again from its own files: every file its
-    # indices list is there with the listed size and SHA256, and both
-    # proofs pass.
+    # Checks the mirror in +dir+ again from its own files: its indices
+    # against their Release files and its pool against its indices, both
+    # ways (Integrity; every file the indices list is there with the listed
+    # size and SHA256), and both proofs pass.
     def self.verify(dir, install: true)
-      manifest = read_manifest(dir)
-      targets = manifest.fetch("targets").keys.map { |name| Target.parse(name) }
-      targets.each do |target|
-        next if [target.codename, target.arch].all? { |part| part.match?(/\A[a-z0-9][a-z0-9.-]*\z/) }
-
-        raise NotAMirror, "#{File.join(dir, MANIFEST)}: #{target} is not a target name"
-      end
-      repository = AptRepository.new(dir, targets: targets)
-      key = manifest["key"] && File.join(repository.dir, manifest["key"])
-      reports = targets.map do |target|
+      manifest = Manifest.read(dir)
+      repository = AptRepository.new(dir, targets: manifest.targets.keys)
+      key = manifest.key && File.join(repository.dir, manifest.key)
+      files = Integrity.new(repository, manifest.targets.keys, key: key).check
+      reports = manifest.targets.map do |target, seeds|
         index = repository.index(target)
-        seeds = manifest.dig("targets", target.to_s, "release")
         counts = { "total" => index.names.size, "release" => seeds.size,
                    "required" => index.binaries.count(&:required?), "bytes" => index.binaries.sum(&:size) }
         Report::TargetReport.new(target: target, counts: counts, changes: nil, missing: missing_files(repository, index),
                                  checks: prove(repository, target, seeds, key, install: install))
       end
-      Report.new(manifest.fetch("release"), reports)
+      Report.new(manifest.release, reports, files: files)
     end
 
     def self.fill(repository, read, target, progress)
@@ -100,7 +93,17 @@ module Relspec
                   "kept" => wanted.size - add.size }
       missing = closure.missing.map(&:to_s).sort
       [target, read.seeds.select { |name| closure.binaries.key?(name) }.sort,
-       Report::TargetReport.new(target: target, counts: counts, changes: changes, missing: missing, checks: [])]
+       Report::TargetReport.new(target: target, counts: counts, changes: changes, missing: missing, checks: [],
+                                pinned: pinned(read.index, closure))]
+    end
+
+    # The release's packages the mirror holds although the distribution
+    # has a higher version of their name (BinaryIndex#pinned).
+    def self.pinned(index, closure)
+      index.pinned.select { |pin| closure.binaries.key?(pin.kept.name) }.map do |pin|
+        "#{pin.kept} of #{pin.kept.origin.label} is kept; the distribution's #{pin.shadowed.version} " \
+          "(#{pin.shadowed.origin.label}) is not mirrored"
+      end
     end
 
     def self.counts(closure, read)
@@ -147,21 +150,6 @@ module Relspec
       end
     end
 
-    def self.read_manifest(dir)
-      path = File.join(dir, MANIFEST)
-      data = YAML.safe_load_file(path)
-      unless data.is_a?(Hash) && data["release"].is_a?(String) && data["targets"].is_a?(Hash) &&
-             data["targets"].values.all? { |entry| entry.is_a?(Hash) && entry["release"].is_a?(Array) }
-        raise NotAMirror, "#{path} is not the mirror.yml of a mirror made by relspec mirror"
-      end
-
-      data
-    rescue Errno::ENOENT
-      raise NotAMirror, "#{dir} is not a mirror: it has no #{MANIFEST} (make one with relspec mirror SPEC --out #{dir})"
-    rescue Psych::Exception => e
-      raise NotAMirror, "#{path}: not YAML (#{e.message})"
-    end
-
     def self.export_key(key_id, dir, release)
       armored, status = Open3.capture2("gpg", "--batch", "--armor", "--export", key_id)
       raise ToolError, "gpg cannot export the key #{key_id} (repository.sign_with)" unless status.success? && !armored.empty?
@@ -171,12 +159,12 @@ module Relspec
       File.join(dir, name)
     end
 
-    def self.write(repository, release, manifest, key, report)
+    def self.write(repository, manifest, key, report)
       dir = repository.dir
-      data = { "release" => release, "key" => key && File.basename(key), "targets" => manifest.sort.to_h }
-      AtomicFile.write(File.join(dir, MANIFEST), YAML.dump(data.compact))
+      release = manifest.release
+      manifest.write(dir)
       AtomicFile.write(File.join(dir, VERIFIED), report.markdown)
-      codenames = manifest.keys.map { |name| name.split("/").first }.uniq.sort
+      codenames = manifest.targets.keys.map(&:codename).uniq.sort
       options = key ? "signed-by=/etc/apt/keyrings/#{File.basename(key)}" : "trusted=yes"
       AtomicFile.write(File.join(dir, "#{release}-mirror.list"),
                        codenames.map { |codename| "deb [#{options}] file://#{dir} #{codename} main\n" }.join)

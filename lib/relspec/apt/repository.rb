@@ -88,6 +88,19 @@ module Relspec
         Digest::SHA256.hexdigest(listed.join)
       end
 
+      # The bytes of +path+ below dists/+codename+ (any file its Release
+      # file lists), checked against the size and SHA256 listed there; an
+      # index compressed with gzip or xz, uncompressed. Raises Error when
+      # it is not listed, missing or not what the Release file says.
+      def listed_text(codename, path)
+        release = release(codename)
+        where = "#{url}/dists/#{codename}/#{path}"
+        raise Error, "#{where} is not listed in the Release file" unless release.checksum(path)
+
+        kind = COMPRESSIONS.find { |file, _| path.end_with?("/#{file}") }&.last || :none
+        decompress(index_bytes(codename, release, path), kind, where)
+      end
+
       private
 
       # [text, where it was read]

@@ -4,6 +4,7 @@ require_relative "../apt/packages_scanner"
 require_relative "../apt/version"
 require_relative "../apt/dependency"
 require_relative "../error"
+require_relative "../osdeps/trust"
 
 module Relspec
   module Mirror
@@ -35,11 +36,17 @@ module Relspec
     # a name, version, file name or checksum that is not what it must be
     # stops the reading, naming the index and the stanza, before anything
     # reaches a path, a download or reprepro. Several indices (a suite and
-    # its -updates and -security) merge: the highest version of a name wins.
+    # its -updates and -security) merge: the highest version of a name wins,
+    # except that a release's package (its own or an ancestor's repository)
+    # is never replaced by the distribution's: the mirror is of the release
+    # as it was published, and the pin is said (#pinned).
     class BinaryIndex
+      # The release's package +kept+ over the distribution's higher
+      # version +shadowed+ of the same name.
+      Pin = Struct.new(:kept, :shadowed, keyword_init: true)
+
       FIELDS = %w[Package Version Architecture Depends Pre-Depends Provides Filename SHA256 Size Essential
                   Priority].freeze
-      NAME = /\A[a-z0-9][a-z0-9.+-]+\z/
       # pool paths as archives write them: no "..", no absolute path, no
       # characters a shell or reprepro would read otherwise
       FILENAME = %r{\A(?!/)(?!.*(?:\A|/)\.\.?(?:/|\z))[A-Za-z0-9._+~%/-]+\.u?deb\z}
@@ -50,6 +57,7 @@ module Relspec
 
       def initialize
         @binaries = {}
+        @pins = {}
         @providers_map = nil
       end
 
@@ -68,6 +76,7 @@ module Relspec
       # The binaries of another index into this one.
       def merge(other)
         other.binaries.each { |binary| keep(binary) }
+        other.pinned.each { |pin| keep(pin.shadowed) }
         @providers_map = nil
         self
       end
@@ -84,6 +93,12 @@ module Relspec
         @binaries.values
       end
 
+      # The Pins of the release's packages that the distribution has in a
+      # higher version, by name.
+      def pinned
+        @pins.sort.map(&:last)
+      end
+
       # The binaries that provide +name+ (virtual packages), by name.
       def providers(name)
         providers_map.fetch(name, [])
@@ -93,9 +108,29 @@ module Relspec
 
       def keep(binary)
         known = @binaries[binary.name]
-        return if known && Apt::Version.parse(binary.version) <= Apt::Version.parse(known.version)
+        if known && known.origin.distribution != binary.origin.distribution
+          release, distribution = known.origin.distribution ? [binary, known] : [known, binary]
+          return pin(release, distribution)
+        end
+        return if known && !newer?(binary, known)
 
         @binaries[binary.name] = binary
+      end
+
+      # +release+'s package stays whatever the distribution's version; a
+      # higher one of the distribution is noted (the highest of its suites).
+      def pin(release, distribution)
+        @binaries[release.name] = release
+        return unless newer?(distribution, release)
+
+        known = @pins[release.name]
+        return if known && !newer?(distribution, known.shadowed)
+
+        @pins[release.name] = Pin.new(kept: release, shadowed: distribution).freeze
+      end
+
+      def newer?(binary, than)
+        Apt::Version.parse(binary.version) > Apt::Version.parse(than.version)
       end
 
       def providers_map
@@ -110,7 +145,8 @@ module Relspec
         filename = stanza["Filename"].to_s
         sha256 = stanza["SHA256"].to_s
         size = stanza["Size"].to_s
-        raise Invalid, "#{where}: #{name.inspect} is not a Debian package name" unless NAME.match?(name)
+        reason = Osdeps::Trust.debian_name(name)
+        raise Invalid, "#{where}: #{reason}" if reason
         raise Invalid, "#{where} (#{name}): invalid Version #{version.inspect}" unless Apt::Version.valid?(version)
         raise Invalid, "#{where} (#{name}): Filename #{filename.inspect} is not a pool path" unless FILENAME.match?(filename)
         raise Invalid, "#{where} (#{name}): no SHA256 checksum" unless SHA256.match?(sha256)

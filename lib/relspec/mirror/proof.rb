@@ -27,6 +27,15 @@ module Relspec
         def passed? = status == "passed"
       end
 
+      # apt-get as mmdebstrap runs it for --include (from outside, into the
+      # chroot), with "--" before the names: --include puts them after
+      # "install" as they are, where one starting with "-" is an apt option.
+      # The names come in by the environment, never as shell text; the hook
+      # runs before the automount hook unmounts the mirror.
+      PACKAGES_VARIABLE = "RELSPEC_MIRROR_PACKAGES"
+      INSTALL_HOOK = 'set -f; env APT_CONFIG="$MMDEBSTRAP_APT_CONFIG" apt-get --yes ' \
+                     "-oDPkg::Chroot-Directory=\"$1\" install -- $#{PACKAGES_VARIABLE}".freeze
+
       def initialize(repository)
         @repository = repository
       end
@@ -80,15 +89,18 @@ module Relspec
       # mmdebstrap in unshare mode reads the mirror as the namespace's
       # root (a subordinate uid): the mirror must be readable by others.
       def install(target, names, sign_key)
-        source = "deb [#{sign_key ? "signed-by=#{sign_key}" : 'trusted=yes'}] file://#{@repository.dir} " \
-                 "#{target.codename} main"
-        command = ["unshare", "--net", "--", "mmdebstrap", "--mode=unshare", "--variant=apt", "--quiet",
-                   "--architectures=#{target.arch}", "--format=null", "--include=#{names.join(',')}",
-                   "--hook-dir=/usr/share/mmdebstrap/hooks/file-mirror-automount",
-                   "--dpkgopt=force-unsafe-io", "--aptopt=Acquire::Languages \"none\"", target.codename, "/dev/null", source]
-        Open3.capture2e(*command)
+        Open3.capture2e({ PACKAGES_VARIABLE => names.join(" ") }, *install_command(target, sign_key))
       rescue SystemCallError => e
         raise ToolError, "cannot run mmdebstrap: #{e.message} (apt-get install mmdebstrap uidmap)"
+      end
+
+      def install_command(target, sign_key)
+        source = "deb [#{sign_key ? "signed-by=#{sign_key}" : 'trusted=yes'}] file://#{@repository.dir} " \
+                 "#{target.codename} main"
+        ["unshare", "--net", "--", "mmdebstrap", "--mode=unshare", "--variant=apt", "--quiet",
+         "--architectures=#{target.arch}", "--format=null", "--customize-hook=#{INSTALL_HOOK}",
+         "--hook-dir=/usr/share/mmdebstrap/hooks/file-mirror-automount",
+         "--dpkgopt=force-unsafe-io", "--aptopt=Acquire::Languages \"none\"", target.codename, "/dev/null", source]
       end
 
       # What apt said it could not find or install, else the last lines.

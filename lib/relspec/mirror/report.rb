@@ -13,47 +13,50 @@ module Relspec
       include RenderedFormats
 
       # +counts+: Hash of what the closure holds; +changes+: added/removed
-      # (nil for verify); +missing+: lines; +checks+: Proof::Check.
-      TargetReport = Struct.new(:target, :counts, :changes, :missing, :checks, keyword_init: true) do
+      # (nil for verify); +missing+: lines; +checks+: Proof::Check;
+      # +pinned+: lines, the release's packages kept over the distribution's
+      # higher versions (nil for verify: the mirror holds one version only).
+      TargetReport = Struct.new(:target, :counts, :changes, :missing, :checks, :pinned, keyword_init: true) do
         def complete?
           missing.empty? && checks.none? { |check| check.status == "failed" } &&
             checks.any? { |check| check.name == "static" && check.passed? }
         end
       end
 
-      attr_reader :release, :targets
+      attr_reader :release, :targets, :files
 
-      def initialize(release, targets)
+      # +files+: the Proof::Check of the mirror's files (Integrity), which
+      # `relspec mirror verify` makes; nil when not checked.
+      def initialize(release, targets, files: nil)
         @release = release
         @targets = targets.freeze
+        @files = files
         freeze
       end
 
       def complete?
-        targets.all?(&:complete?)
+        targets.all? { |one| complete_target?(one) }
       end
 
       def to_h
         { "release" => release, "complete" => complete?,
           "targets" => targets.to_h do |one|
-            [one.target.to_s, { "complete" => one.complete?, "packages" => one.counts, "changes" => one.changes,
-                                "missing" => one.missing,
-                                "checks" => one.checks.to_h do |check|
-                                  [check.name, { "status" => check.status, "detail" => check.detail,
-                                                 "problems" => check.problems }]
-                                end }]
-          end }
+            [one.target.to_s, { "complete" => complete_target?(one), "packages" => one.counts, "changes" => one.changes,
+                                "missing" => one.missing, "pinned" => one.pinned, "checks" => one.checks.to_h { |check| check_h(check) } }]
+          end, "files" => files && check_h(files)[1] }
       end
 
       def text
         lines = targets.flat_map do |one|
-          head = ["#{one.target}: #{one.complete? ? 'complete' : 'NOT complete'} — #{summary(one.counts)}"]
+          head = ["#{one.target}: #{complete_target?(one) ? 'complete' : 'NOT complete'} — #{summary(one.counts)}"]
           head << "  changes: #{change_text(one.changes)}" if one.changes
+          head.concat(Array(one.pinned).map { |line| "  pinned: #{line}" })
           head + one.missing.map { |line| "  missing: #{line}" } +
             one.checks.flat_map do |check|
               ["  #{check.name} proof: #{check.status} (#{check.detail})", *check.problems.map { |line| "    #{line}" }]
             end
         end
+        lines += ["files: #{files.status} (#{files.detail})", *files.problems.map { |line| "  #{line}" }] if files
         "#{lines.join("\n")}\n"
       end
 
@@ -64,14 +67,26 @@ module Relspec
               check.problems.map { |line| "\n  - #{line}" }.join
           end
           missing = one.missing.map { |line| "- missing: #{line}" }
-          ["## #{one.target}: #{one.complete? ? 'complete' : 'NOT complete'}", "", "#{summary(one.counts)}.", "",
-           *missing, *checks].join("\n")
+          pinned = Array(one.pinned).map { |line| "- pinned: #{line}" }
+          ["## #{one.target}: #{complete_target?(one) ? 'complete' : 'NOT complete'}", "", "#{summary(one.counts)}.", "",
+           *pinned, *missing, *checks].join("\n")
         end
+        body << ["## Files: **#{files.status}** (#{files.detail})", *files.problems.map { |line| "- #{line}" }].join("\n") if files
         "# Mirror of #{release}\n\nMade and checked by `relspec mirror`; `relspec mirror verify DIR` checks it " \
           "again offline (docs/mirror.md).\n\n#{body.join("\n\n")}\n"
       end
 
       private
+
+      # A target of a mirror whose files are not what its indices say is
+      # not complete, whatever its proofs found.
+      def complete_target?(one)
+        one.complete? && files&.status != "failed"
+      end
+
+      def check_h(check)
+        [check.name, { "status" => check.status, "detail" => check.detail, "problems" => check.problems }]
+      end
 
       # "351 packages (7 of the release, 4 of them inherited; 344 from the
       # distribution, 33 of them its minimal system), 252.5 MB": the parts

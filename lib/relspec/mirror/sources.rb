@@ -2,6 +2,7 @@
 
 require "yaml"
 require_relative "binary_index"
+require_relative "../osdeps/trust"
 require_relative "../apt/fetcher"
 require_relative "../apt/host_lists"
 require_relative "../apt/opening"
@@ -92,8 +93,9 @@ module Relspec
         key = debian.keys.find { |keys| keys.to_s.split(",").map(&:strip).include?(target.codename) }
         name = key && debian[key]
         return nil if name.nil?
-        raise RepositoryError, "#{where}: #{name.inspect} is not a Debian package name" unless
-          name.is_a?(String) && BinaryIndex::NAME.match?(name)
+
+        reason = Osdeps::Trust.debian_name(name)
+        raise RepositoryError, "#{where}: #{reason}" if reason
 
         name
       end

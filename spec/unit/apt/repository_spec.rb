@@ -42,4 +42,17 @@ RSpec.describe Relspec::Apt::Repository, :tmpdir do
     after = described_class.new(Relspec::Apt::Fetcher.new(@dir), trusted: true).index_digest("bookworm", "amd64")
     expect(after).not_to eq(before)
   end
+
+  it "reads any file its Release file lists, checked against it and uncompressed, and refuses the others" do
+    write_repository("Package: ruby-foo\nVersion: 1.0-1\n", xz_listed: true)
+    expect(repository.listed_text("bookworm", "main/binary-amd64/Packages.gz")).to eq("Package: ruby-foo\nVersion: 1.0-1\n")
+    expect { repository.listed_text("bookworm", "main/binary-amd64/Packages.xz") }
+      .to raise_error(described_class::Error, %r{dists/bookworm/main/binary-amd64/Packages.xz is listed in the Release file but missing})
+    expect { repository.listed_text("bookworm", "main/binary-amd64/Packages") }
+      .to raise_error(described_class::Error, %r{dists/bookworm/main/binary-amd64/Packages is not listed in the Release file})
+    gz = File.join(@dir, "dists", "bookworm", "main", "binary-amd64", "Packages.gz")
+    File.binwrite(gz, Zlib.gzip("Package: ruby-fob\nVersion: 1.0-1\n"))
+    expect { described_class.new(Relspec::Apt::Fetcher.new(@dir), trusted: true).listed_text("bookworm", "main/binary-amd64/Packages.gz") }
+      .to raise_error(described_class::Error, /Packages.gz does not match the SHA256 of the Release file/)
+  end
 end

@@ -48,4 +48,23 @@ RSpec.describe Relspec::Mirror::BinaryIndex do
         .to raise_error(described_class::Invalid, /\APackages, stanza 2/)
     end
   end
+
+  it "keeps a release's package over the distribution's higher version of its name, and says so" do
+    release = Relspec::Mirror::Origin.new(label: "g", fetcher: nil, distribution: false)
+    index = described_class.new.add(stanza("rock-g", version: "1.0-1"), origin: release, where: "release")
+    index.add(stanza("rock-g", version: "9.0-1"), origin: origin, where: "bookworm")
+    index.add(stanza("rock-g", version: "9.1-1"), origin: origin, where: "bookworm-updates")
+    index.add(stanza("rock-g", version: "0.5-1"), origin: origin, where: "old")
+    expect(index["rock-g"].version).to eq("1.0-1")
+    expect(index.pinned.map { |pin| [pin.kept.to_s, pin.shadowed.to_s] }).to eq([["rock-g 1.0-1", "rock-g 9.1-1"]])
+
+    # in whichever order the indices come, merged or added
+    merged = index(stanza("rock-g", version: "9.0-1")).merge(described_class.new.add(stanza("rock-g", version: "1.0-1"),
+                                                                                     origin: release, where: "release"))
+    expect([merged["rock-g"].version, merged.pinned.size]).to eq(["1.0-1", 1])
+    expect(described_class.new.merge(merged).pinned.map { |pin| pin.shadowed.version }).to eq(["9.0-1"])
+    # a lower version of the distribution is no pin
+    lower = index(stanza("rock-g", version: "0.1-1")).add(stanza("rock-g", version: "1.0-1"), origin: release, where: "r")
+    expect([lower["rock-g"].version, lower.pinned]).to eq(["1.0-1", []])
+  end
 end

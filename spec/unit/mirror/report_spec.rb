@@ -38,4 +38,25 @@ RSpec.describe Relspec::Mirror::Report do
     expect(report.markdown).to include("## bookworm/amd64: NOT complete", "- missing: libx (needed by app 1)")
     expect(JSON.parse(report.render("json")).dig("targets", "bookworm/amd64", "checks", "static", "status")).to eq("passed")
   end
+
+  it "is not complete, nor any of its targets, when the mirror's files are not what its indices say" do
+    report = described_class.new("r", [target_report], files: check("files", "failed", ["pool/x.deb is in the pool but no index names it"]))
+    expect(report).not_to be_complete
+    expect(report.text).to start_with("bookworm/amd64: NOT complete").and end_with(
+      "files: failed (d)\n  pool/x.deb is in the pool but no index names it\n"
+    )
+    expect(report.markdown).to include("## bookworm/amd64: NOT complete", "## Files: **failed** (d)\n- pool/x.deb is in the pool")
+    expect(JSON.parse(report.render("json")).values_at("complete", "files"))
+      .to eq([false, { "status" => "failed", "detail" => "d", "problems" => ["pool/x.deb is in the pool but no index names it"] }])
+    expect(described_class.new("r", [target_report], files: check("files", "passed"))).to be_complete
+  end
+
+  it "says which of the release's packages were kept over the distribution's higher versions" do
+    one = described_class::TargetReport.new(**target_report.to_h, pinned: ["rock-a 1.0 of r is kept; the distribution's 9.0 (bookworm) is not mirrored"])
+    report = described_class.new("r", [one])
+    expect(report).to be_complete
+    expect(report.text.lines[1]).to eq("  pinned: rock-a 1.0 of r is kept; the distribution's 9.0 (bookworm) is not mirrored\n")
+    expect(report.markdown).to include("\n- pinned: rock-a 1.0 of r is kept")
+    expect(JSON.parse(report.render("json")).dig("targets", "bookworm/amd64", "pinned").size).to eq(1)
+  end
 end
