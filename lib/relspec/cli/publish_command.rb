@@ -19,10 +19,7 @@ module Relspec
       def call
         result = Publish.run(@path, out: @out, target: @target, timeout: @timeout,
                                     waiting: ->(what) { @err.puts("waiting for #{what} to finish…") })
-        if result.stale_lock
-          @err.puts("removed reprepro's stale lock #{result.stale_lock} (no reprepro uses the repository: " \
-                    "one was killed before it could remove it)")
-        end
+        @err.puts(Publish::StaleRepreproLock.note(result.stale_lock)) if result.stale_lock
         note_recovered(result)
         result.targets.each { |target| report(target) }
         @io.puts("#{result.release}: #{result.repository}: #{result.osdeps_written.zero? ? 'osdeps unchanged' : "wrote #{result.osdeps_written} osdeps files"}")

@@ -6,6 +6,7 @@ require "open3"
 require_relative "../atomic_file"
 require_relative "../error"
 require_relative "binary_index"
+require_relative "../publish/stale_reprepro_lock"
 
 module Relspec
   module Mirror
@@ -24,11 +25,18 @@ module Relspec
         @sign_with = sign_with
       end
 
+      # Writes conf/, and removes reprepro's lock (db/lockfile) when no live
+      # reprepro uses the mirror (a run killed while reprepro worked left it,
+      # and every later reprepro would wait for it, then fail): publish's own
+      # rule, Publish::StaleRepreproLock. The removed lock's path, or nil.
       def configure
         conf = File.join(@dir, "conf")
         FileUtils.mkdir_p(conf)
         AtomicFile.write(File.join(conf, "distributions"), distributions)
         AtomicFile.write(File.join(conf, "options"), "waitforlock 30\n")
+        Publish::StaleRepreproLock.clear(@dir)
+      rescue SystemCallError => e
+        raise ToolError, "cannot remove reprepro's lock in #{@dir}/db: #{e.message.sub(/ @ .*/, '')}"
       end
 
       def index_path(target)
