@@ -51,10 +51,16 @@ RSpec.describe "relspec abi and report with a hostile type registry in an ancest
                                                   "typelib registry defines: refused, not compared\n"])
   end
 
-  it "refuses a registry of a million types by its size, at once" do
+  # demo-child built, demo-base publishing a registry of /base/Time after
+  # +count+ types made by the block (index → element); the published dump.
+  def published_types(count, &type)
     demo_child_built(@dir, registry(8, micro))
-    types = (1..1_000_000).map { |index| %(<numeric name="/t#{index}" category="sint" size="8"></numeric>\n) }.join
-    dump = demo_base_published(@dir, registry(8, micro).sub("<typelib>\n", "<typelib>\n#{types}"))
+    types = (1..count).map(&type).join
+    demo_base_published(@dir, registry(8, micro).sub("<typelib>\n", "<typelib>\n#{types}"))
+  end
+
+  it "refuses a registry of a million types by its size, at once" do
+    dump = published_types(1_000_000) { |index| %(<numeric name="/t#{index}" category="sint" size="8"></numeric>\n) }
     started = Process.clock_gettime(Process::CLOCK_MONOTONIC)
     run = abi(@dir)
     expect(Process.clock_gettime(Process::CLOCK_MONOTONIC) - started).to be < 15
@@ -63,9 +69,7 @@ RSpec.describe "relspec abi and report with a hostile type registry in an ancest
   end
 
   it "refuses a registry of more types than its bound, within its size" do
-    demo_child_built(@dir, registry(8, micro))
-    types = (1..60_000).map { |index| %(<null name="/t#{index}"/>\n) }.join
-    dump = demo_base_published(@dir, registry(8, micro).sub("<typelib>\n", "<typelib>\n#{types}"))
+    dump = published_types(60_000) { |index| %(<null name="/t#{index}"/>\n) }
     run = abi(@dir)
     expect([run.exit_code, run.stderr]).to eq([1, "relspec: error: #{dump} is a type registry of more than 50000 types: " \
                                                   "not compared (the rest was not read)\n"])

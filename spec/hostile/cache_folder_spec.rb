@@ -15,10 +15,7 @@ RSpec.describe "relspec plan with a cache folder that cannot be written", :tmpdi
     @base = Dir.mktmpdir("relspec-hostile-cache-folder")
     GemOsdepRelease.build(@base, archive: "debian", package: ["ruby-foo", "1.2.0-1"])
     FileUtils.mkdir_p(File.join(@base, "specs"))
-    File.write(File.join(@base, "specs", "g.yml"),
-               "release: g\nworkspace: #{@base}/ws/workspace\ntargets: { bookworm: [amd64] }\n" \
-               "maintainer: Demo <demo@example.org>\ngem_source: http://127.0.0.1:1\n" \
-               "distributions:\n  bookworm: { archive: { path: ../debian, trusted: true } }\n")
+    File.write(File.join(@base, "specs", "g.yml"), GemOsdepRelease.spec(@base))
   end
 
   after(:all) { FileUtils.rm_rf(@base) }
