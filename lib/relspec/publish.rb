@@ -101,7 +101,7 @@ module Relspec
       RepositoryLock.hold(repository, waiting: waiting) do
         # read before anything is published: a damaged index is made again
         # here, never found after the packages are in
-        dumps = published_dumps(repository, results, tree.release)
+        dumps, rebuilt = published_dumps(repository, results, tree.release)
         stale_lock, recovered, targets = transaction(repository, waiting: waiting) do |dirs, recovered_now|
           include_targets(repository, dirs, config, results, uploads, export: recovered_now == :abandoned)
         end
@@ -109,7 +109,7 @@ module Relspec
         written, missing = write_osdeps(locked, effective, repository)
         Result.new(release: effective.release, repository: repository, targets: targets, osdeps_written: written,
                    osdeps_missing: missing, stale_lock: stale_lock, recovered: recovered,
-                   abi_rebuilt: dumps.values.grep(Abi::RebuiltDumps))
+                   abi_rebuilt: rebuilt)
       end
     end
 
@@ -197,20 +197,23 @@ module Relspec
       config.files.map { |name, text| AtomicFile.update(File.join(dir, name), text) }.any?
     end
 
-    # Per built target, the ABI dumps the repository lists: its index
-    # (Abi::PublishedDumps), or, when the index cannot be read, an
-    # Abi::RebuiltDumps of the dump files there that a record of the
-    # target's build-results.yml (every record, not only this plan's)
-    # vouches for.
+    # Per built target, the ABI dumps the repository lists (an
+    # Abi::PublishedDumps): its index, or, when the index cannot be read,
+    # the dump files there that a record of the target's build-results.yml
+    # (every record, not only this plan's) vouches for (Abi::RebuiltDumps).
+    # [target => PublishedDumps, the RebuiltDumps made]
     def self.published_dumps(repository, results, release)
-      results.filter_map do |target, read|
+      rebuilt = []
+      dumps = results.filter_map do |target, read|
         next unless read
 
         [target, Abi::PublishedDumps.read(repository, target)]
       rescue InvalidInput => e
         records = Builder::BuildResults.read(read.path, release: release, target: target).built
-        [target, Abi::RebuiltDumps.of(repository, target, records, problem: e.message.lines.first.strip)]
+        rebuilt << Abi::RebuiltDumps.of(repository, target, records, problem: e.message.lines.first.strip)
+        [target, rebuilt.last.dumps]
       end.to_h
+      [dumps, rebuilt]
     end
 
     # The ABI dumps of the built libraries beside the apt repository
@@ -220,9 +223,7 @@ module Relspec
       results.each do |target, read|
         next unless read
 
-        current = dumps.fetch(target)
-        current = current.dumps if current.is_a?(Abi::RebuiltDumps)
-        Abi::PublishedDumps.write(repository, target, File.dirname(read.path), read.built, current: current)
+        Abi::PublishedDumps.write(repository, target, File.dirname(read.path), read.built, current: dumps.fetch(target))
       end
     end
 

@@ -34,9 +34,11 @@ module Relspec
         FileUtils.mkdir_p(conf)
         AtomicFile.write(File.join(conf, "distributions"), distributions)
         AtomicFile.write(File.join(conf, "options"), "waitforlock 30\n")
-        Publish::StaleRepreproLock.clear(@dir)
-      rescue SystemCallError => e
-        raise ToolError, "cannot remove reprepro's lock in #{@dir}/db: #{e.message.sub(/ @ .*/, '')}"
+        begin
+          Publish::StaleRepreproLock.clear(@dir)
+        rescue SystemCallError => e # a db/lockfile that is a folder, a read-only db/
+          raise ToolError, "cannot remove reprepro's stale lock in #{@dir}/db: #{e.message.sub(/ @ .*/, '')}"
+        end
       end
 
       def index_path(target)
