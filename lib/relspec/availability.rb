@@ -3,6 +3,8 @@
 require_relative "error"
 require_relative "plan"
 require_relative "apt/cache"
+require_relative "cache_writer"
+require_relative "cache_dir"
 require_relative "availability/requirements"
 require_relative "availability/sources"
 require_relative "availability/check"
@@ -29,22 +31,28 @@ module Relspec
     # +target+ names ("codename/arch", nil: all); +launchpad_url+: the
     # Launchpad API to ask.
     def self.run(path, target:, mode:, launchpad_url:, timeout:, concurrency:)
-      planned = Plan.run(path, timeout: timeout)
+      cache_writer = CacheWriter.new
+      planned = Plan.run(path, timeout: timeout, cache_writer: cache_writer)
       only = Target.select(target, planned.plan.targets.keys, planned.plan.release)
       check(planned, mode: mode, launchpad: LaunchpadClient.new(base: launchpad_url, timeout: timeout), only: only,
-                     timeout: timeout, concurrency: concurrency)
+                     timeout: timeout, concurrency: concurrency, cache_writer: cache_writer)
     end
 
     # The check of a planned release (+planned+: Plan::Result). +mode+:
     # auto, apt or launchpad (Sources); +launchpad+: a LaunchpadClient, nil
     # to take Launchpad answers from the cache only; +only+: targets to check.
     # +launchpad_base+: whose cached answers count when +launchpad+ is nil.
+    # +cache_writer+: the CacheWriter of the run's caches (planning's too).
     def self.check(planned, mode: "auto", launchpad: nil, only: nil, timeout: 10,
-                   concurrency: LaunchpadSource::CONCURRENCY, launchpad_base: nil)
+                   concurrency: LaunchpadSource::CONCURRENCY, launchpad_base: nil, cache_writer: CacheWriter.new)
       launchpad_base = launchpad&.base || launchpad_base || LaunchpadClient::DEFAULT_BASE
       sources = Sources.new(planned.effective.distributions, mode: mode, spec_dir: planned.spec_dir,
                                                              launchpad: launchpad, fetcher_options: { timeout: timeout },
-                                                             apt_cache: Apt::Cache.new(Apt::Cache.default_dir),
+                                                             apt_cache: Apt::Cache.new(Apt::Cache.default_dir, writer: cache_writer),
+                                                             names_cache: Apt::Cache.new(CacheDir.for("availability"),
+                                                                                         writer: cache_writer),
+                                                             answer_cache: AnswerCache.new(AnswerCache.default_dir,
+                                                                                           writer: cache_writer),
                                                              concurrency: concurrency, launchpad_base: launchpad_base)
       Check.run(planned.effective.release, Requirements.of(planned, only: only), sources)
     end
@@ -53,8 +61,8 @@ module Relspec
     # indices cached by checksum), Launchpad only from its answer cache, never
     # asking the network. Returns the Report (its #unchecked targets deserve
     # a note); raises MissingDependencies when the release must not be built.
-    def self.guard(planned, timeout: 10, launchpad_base: LaunchpadClient::DEFAULT_BASE)
-      report = check(planned, timeout: timeout, launchpad_base: launchpad_base)
+    def self.guard(planned, timeout: 10, launchpad_base: LaunchpadClient::DEFAULT_BASE, cache_writer: CacheWriter.new)
+      report = check(planned, timeout: timeout, launchpad_base: launchpad_base, cache_writer: cache_writer)
       raise MissingDependencies, report if report.failed?
 
       report

@@ -49,14 +49,16 @@ module Relspec
     end
 
     def run
-      @planned = Plan.compute(@path, timeout: @timeout, discard_lock: @discard_lock)
+      cache_writer = CacheWriter.new # one note for every cache the run cannot write
+      @planned = Plan.compute(@path, timeout: @timeout, cache_writer: cache_writer, discard_lock: @discard_lock)
       @on_planned&.call(@planned)
       @effective = @planned.effective
       @tree = OutputTree.new(@out, @effective.release)
       require_maintainer
       require_workspace
       availability = if @check
-                       Availability.guard(@planned, timeout: @timeout, **(@check.is_a?(Hash) ? @check : {}))
+                       Availability.guard(@planned, timeout: @timeout, cache_writer: cache_writer,
+                                                    **(@check.is_a?(Hash) ? @check : {}))
                      end
       @catalog = @planned.catalog
       plan = @planned.plan

@@ -31,15 +31,17 @@ module Relspec
     INCOMING = ".relspec-incoming"
 
     # +targets+: "codename/arch" strings (empty: every target of the spec);
-    # +progress+: an IO for one line per step, or nil.
-    def self.run(path, out:, targets: [], timeout: 10, progress: nil, install: true)
+    # +progress+: an IO for one line per step, or nil; +notes+: an IO for
+    # what the run repaired on its way (a stale reprepro lock), or nil.
+    def self.run(path, out:, targets: [], timeout: 10, progress: nil, install: true, notes: nil)
       resolution = ReleaseSpec.resolve(path)
       effective = resolution.effective
       all = Target.all(effective)
       selected = Target.select(targets.empty? ? nil : targets, all, effective.release)
       sign_with = effective.repository&.sign_with
       repository = AptRepository.new(out, targets: selected, sign_with: sign_with)
-      repository.configure
+      stale = repository.configure
+      notes&.puts(Publish::StaleRepreproLock.note(stale)) if stale
       sources = Sources.new(resolution, timeout: timeout, cache: Apt::Cache.new(Apt::Cache.default_dir))
       key = sign_with && export_key(sign_with, repository.dir, effective.release)
       made = selected.map { |target| fill(repository, sources.read(target), target, progress) }

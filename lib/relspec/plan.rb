@@ -4,6 +4,7 @@ require_relative "release_specs"
 require_relative "catalog/release_catalog"
 require_relative "catalog/uncommitted_changes"
 require_relative "catalog/cache"
+require_relative "cache_writer"
 require_relative "project"
 require_relative "plan/target"
 require_relative "apt/opening"
@@ -24,9 +25,10 @@ module Relspec
   module Plan
     # Plans the release of the spec at +path+: Plan.decide over Plan.read.
     # Returns a Result.
-    def self.compute(path, timeout: 10, cache_dir: Apt::Cache.default_dir, catalog_cache: Catalog::Cache.new,
-                     discard_lock: false)
-      decide(read(path, timeout: timeout, cache_dir: cache_dir, catalog_cache: catalog_cache, discard_lock: discard_lock))
+    def self.compute(path, timeout: 10, cache_dir: Apt::Cache.default_dir, cache_writer: CacheWriter.new,
+                     catalog_cache: Catalog::Cache.new(writer: cache_writer), discard_lock: false)
+      decide(read(path, timeout: timeout, cache_dir: cache_dir, cache_writer: cache_writer, catalog_cache: catalog_cache,
+                        discard_lock: discard_lock))
     end
 
     # Everything planning reads (Facts): the spec hierarchy, the workspace,
@@ -35,14 +37,16 @@ module Relspec
     # the folder above the spec's folder. +timeout+ is the HTTP timeout in
     # seconds; +cache_dir+ holds downloaded indices (nil: none).
     # +discard_lock+: start without the lock's history when it cannot be read.
-    def self.read(path, timeout: 10, cache_dir: Apt::Cache.default_dir, catalog_cache: Catalog::Cache.new,
-                  discard_lock: false)
+    # +cache_writer+: the CacheWriter of every cache the run writes (a cache
+    # that cannot be written is noted once, and planning goes on).
+    def self.read(path, timeout: 10, cache_dir: Apt::Cache.default_dir, cache_writer: CacheWriter.new,
+                  catalog_cache: Catalog::Cache.new(writer: cache_writer), discard_lock: false)
       resolution = ReleaseSpec.resolve(path)
       effective = resolution.effective
       lock_path = Lock.path(project_root(path), effective.release)
       previous = read_lock(lock_path, effective.release, discard_lock)
       gem_fetch = Catalog::ReleaseGems.fetcher(effective, File.dirname(resolution.spec_file.path), timeout: timeout)
-      cache = Apt::Cache.new(cache_dir)
+      cache = Apt::Cache.new(cache_dir, writer: cache_writer)
       fetcher_options = { timeout: timeout }
       targets = Target.all(effective)
       gem_distribution = nil

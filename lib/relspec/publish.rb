@@ -25,6 +25,7 @@ require_relative "publish/held_packages"
 require_relative "report"
 require_relative "abi/published_dumps"
 require_relative "unlinked_path"
+require_relative "abi/rebuilt_dumps"
 
 module Relspec
   # `relspec publish`: the built packages of a release into its reprepro
@@ -46,8 +47,10 @@ module Relspec
     # before publishing (nil: there was none); +recovered+: what became of
     # an interrupted publish's work (Transaction#recover; nil: none).
     # +report+: the status page written next to the repository (Report).
+    # +abi_rebuilt+: the ABI indices that could not be read and were made
+    # again (Abi::RebuiltDumps), none when every index was read.
     Result = Struct.new(:release, :repository, :targets, :osdeps_written, :osdeps_missing, :stale_lock, :recovered,
-                        :report, keyword_init: true)
+                        :report, :abi_rebuilt, keyword_init: true)
 
     # +target+: "codename/arch" or nil (all targets); +waiting+: called
     # when another publisher holds the repository.
@@ -99,13 +102,17 @@ module Relspec
       config = RepositoryConfig.new(release: effective.release, targets: all, sign_with: sign_with)
       check_links(repository, results)
       RepositoryLock.hold(repository, waiting: waiting) do
+        # read before anything is published: a damaged index is made again
+        # here, never found after the packages are in
+        dumps, rebuilt = published_dumps(repository, results, effective.release)
         stale_lock, recovered, targets = transaction(repository, waiting: waiting) do |dirs, recovered_now|
           include_targets(repository, dirs, config, results, uploads, export: recovered_now == :abandoned)
         end
-        write_abi_dumps(repository, results)
+        write_abi_dumps(repository, results, dumps)
         written, missing = write_osdeps(locked, effective, repository)
         Result.new(release: effective.release, repository: repository, targets: targets, osdeps_written: written,
-                   osdeps_missing: missing, stale_lock: stale_lock, recovered: recovered)
+                   osdeps_missing: missing, stale_lock: stale_lock, recovered: recovered,
+                   abi_rebuilt: rebuilt)
       end
     end
 
@@ -206,11 +213,33 @@ module Relspec
       config.files.map { |name, text| AtomicFile.update(File.join(dir, name), text) }.any?
     end
 
+    # Per built target, the ABI dumps the repository lists (an
+    # Abi::PublishedDumps): its index, or, when the index cannot be read,
+    # the dump files there that a record of the target's build-results.yml
+    # (every record, not only this plan's) vouches for (Abi::RebuiltDumps).
+    # [target => PublishedDumps, the RebuiltDumps made]
+    def self.published_dumps(repository, results, release)
+      rebuilt = []
+      dumps = results.filter_map do |target, read|
+        next unless read
+
+        [target, Abi::PublishedDumps.read(repository, target)]
+      rescue InvalidInput => e
+        records = Builder::BuildResults.read(read.path, release: release, target: target).built
+        rebuilt << Abi::RebuiltDumps.of(repository, target, records, problem: e.message.lines.first.strip)
+        [target, rebuilt.last.dumps]
+      end.to_h
+      [dumps, rebuilt]
+    end
+
     # The ABI dumps of the built libraries beside the apt repository
-    # (Abi::PublishedDumps), verified with the other files by Upload.
-    def self.write_abi_dumps(repository, results)
+    # (Abi::PublishedDumps), verified with the other files by Upload, over
+    # +dumps+ (published_dumps).
+    def self.write_abi_dumps(repository, results, dumps)
       results.each do |target, read|
-        Abi::PublishedDumps.write(repository, target, File.dirname(read.path), read.built) if read
+        next unless read
+
+        Abi::PublishedDumps.write(repository, target, File.dirname(read.path), read.built, current: dumps.fetch(target))
       end
     end
 

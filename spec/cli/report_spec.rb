@@ -1,11 +1,8 @@
 # frozen_string_literal: true
 
 require "spec_helper"
-require_relative "../support/committed_releases"
+require_relative "../support/demo_child_dumps"
 require "tmpdir"
-require "fileutils"
-require "digest"
-require "zlib"
 require "json"
 
 # The user errors of `relspec report`; the page itself is read by a browser
@@ -25,53 +22,15 @@ RSpec.describe "relspec report" do
     expect([run.exit_code, run.stderr]).to eq([1, "relspec: error: Expected '--format' to be one of html, json; got pdf\n"])
   end
 
-  # The shipped demo's specs and locks, and demo-child's last build with one
-  # dump: base/types's type registry (compared by relspec abi's own code,
-  # no abidiff needed), whose /base/Time grew a field since demo-base.
-  def demo_child_built(root, registry)
-    CommittedReleases.project(root, %w[demo-base demo-child])
-    target = File.join(root, "out", "demo-child", "bookworm-amd64")
-    dump = gzip(File.join(target, "results", "rock-demo-child-base-types", "base.tlb.abi.xml.gz"), registry)
-    File.write(File.join(target, "build-results.yml"), <<~YAML)
-      relspec_build_results: 1
-      release: demo-child
-      target: bookworm/amd64
-      backend: host
-      packages:
-        rock-demo-child-base-types:
-          package: base/types
-          version: 2.0-1~bookworm
-          status: built
-          files:
-            - { name: results/rock-demo-child-base-types/base.tlb.abi.xml.gz, sha256: #{dump}, size: 1 }
-    YAML
-  end
-
-  # Writes +text+ gzip-compressed at +path+; returns the file's SHA256.
-  def gzip(path, text)
-    FileUtils.mkdir_p(File.dirname(path))
-    Zlib::GzipWriter.open(path) { |gz| gz.write(text) }
-    Digest::SHA256.file(path).hexdigest
-  end
-
-  def registry(size, fields)
-    %(<?xml version="1.0"?>\n<typelib>\n<numeric name="/int64_t" category="sint" size="8" source_id=""></numeric>\n) +
-      %(<compound name="/base/Time" size="#{size}" source_id="">#{fields}</compound>\n</typelib>\n)
-  end
+  include DemoChildDumps
 
   let(:micro) { '<field name="microseconds" type="/int64_t" offset="0"></field>' }
-  let(:abi_dir) { File.join("build", "repositories", "demo-base", "abi", "bookworm-amd64") }
+  let(:abi_dir) { DemoChildDumps::ABI_DIR }
 
   it "sums up the ABI verdicts of the release's dumps against its ancestor's published ones" do
     Dir.mktmpdir("relspec-cli-report") do |root|
       demo_child_built(root, registry(16, "#{micro}<field name=\"flags\" type=\"/int64_t\" offset=\"8\"></field>"))
-      old = gzip(File.join(root, abi_dir, "rock-demo-base-base-types", "base.tlb.abi.xml.gz"), registry(8, micro))
-      File.write(File.join(root, abi_dir, "index.yml"), <<~YAML)
-        relspec_abi_dumps: 1
-        dumps:
-          - { package: base/types, source: rock-demo-base-base-types, version: 1.0-1, library: base.tlb,
-              file: rock-demo-base-base-types/base.tlb.abi.xml.gz, sha256: #{old} }
-      YAML
+      demo_base_published(root, registry(8, micro))
 
       expect(relspec("report", "specs/demo-child.yml", "--out", "out", chdir: root).exit_code).to eq(0)
       page = File.read(File.join(root, "out", "demo-child", "report", "index.html"))

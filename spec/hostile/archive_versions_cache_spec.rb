@@ -34,10 +34,7 @@ RSpec.describe "relspec plan with a hostile archive-versions cache", :tmpdir do
     FileUtils.rm_rf(File.join(cache, "relspec", "apt"))
     FileUtils.cp_r(File.join(@base, "debian"), File.join(@dir, "debian"))
     FileUtils.mkdir_p(File.join(@dir, "specs"))
-    File.write(File.join(@dir, "specs", "g.yml"),
-               "release: g\nworkspace: #{@base}/ws/workspace\ntargets: { bookworm: [amd64] }\n" \
-               "maintainer: Demo <demo@example.org>\ngem_source: http://127.0.0.1:1\n" \
-               "distributions:\n  bookworm: { archive: { path: ../debian, trusted: true } }\n")
+    File.write(File.join(@dir, "specs", "g.yml"), GemOsdepRelease.spec(@base))
   end
 
   def cache

@@ -58,16 +58,17 @@ module CliRunner
   at_exit { FileUtils.rm_rf(File.dirname(CCACHE)) }
   CCACHE_ENV = Process.uid.zero? ? { "RELSPEC_CCACHE" => CCACHE } : {}
 
-  # +env+: more environment variables; +umask+: the child's umask. Runs in
-  # a child of the preloaded relspec where that is the same as a process
-  # of its own (PreloadedRelspec).
-  def relspec(*args, chdir: ROOT, env: {}, umask: nil)
+  # +env+: more environment variables; +umask+: the child's umask;
+  # +within+: a command that runs relspec's process as its last arguments
+  # (such as FullFilesystem#command). Runs in a child of the preloaded
+  # relspec where that is the same as a process of its own (PreloadedRelspec).
+  def relspec(*args, chdir: ROOT, env: {}, umask: nil, within: [])
     environment = child_environment(env)
-    run = if PreloadedRelspec.serves?(environment, umask)
+    run = if within.empty? && PreloadedRelspec.serves?(environment, umask)
             stdout, stderr, status, rss = CliRunner.preloaded.run(args, chdir: chdir, env: environment)
             Run.new(args: args, stdout: stdout, stderr: stderr, status: status, max_rss_kib: rss)
           else
-            spawned_run(args, chdir, environment, umask)
+            spawned_run(args, chdir, environment, umask, within)
           end
     relspec_runs << run
     run
@@ -116,14 +117,14 @@ module CliRunner
 
   private
 
-  def spawned_run(args, chdir, environment, umask)
+  def spawned_run(args, chdir, environment, umask, within = [])
     options = { chdir: chdir, stdin_data: "" }
     options[:umask] = umask if umask
     Dir.mktmpdir("relspec-run") do |dir|
       report = File.join(dir, "rss")
       # -q: the report holds the number only, whatever the exit status
-      stdout, stderr, status = Open3.capture3(environment, TIME, "-q", "-o", report, "-f", "%M", RbConfig.ruby, EXE,
-                                              *args, **options)
+      stdout, stderr, status = Open3.capture3(environment, *within, TIME, "-q", "-o", report, "-f", "%M", RbConfig.ruby,
+                                              EXE, *args, **options)
       Run.new(args: args, stdout: stdout, stderr: stderr, status: status, max_rss_kib: File.read(report).to_i)
     end
   end

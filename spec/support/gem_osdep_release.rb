@@ -18,4 +18,13 @@ module GemOsdepRelease
     AptRepositoryBuilder.new(File.join(dir, archive), codenames: ["bookworm"], architectures: ["amd64"])
                         .add(*package, codename: "bookworm", arch: "amd64")
   end
+
+  # The release's spec g (specs/g.yml of a folder beside the archive
+  # ../debian) over the workspace #build made in +dir+; its gem_source a
+  # closed port.
+  def spec(dir)
+    "release: g\nworkspace: #{dir}/ws/workspace\ntargets: { bookworm: [amd64] }\n" \
+      "maintainer: Demo <demo@example.org>\ngem_source: http://127.0.0.1:1\n" \
+      "distributions:\n  bookworm: { archive: { path: ../debian, trusted: true } }\n"
+  end
 end

@@ -45,7 +45,7 @@ module Relspec
 
       # Two oroGen type registries, compared type by type (TypeRegistry).
       def registries(old_xml, old, new_xml, new)
-        TypeRegistry.parse(File.read(old_xml), file: old).compare(TypeRegistry.parse(File.read(new_xml), file: new))
+        TypeRegistry.read(old_xml, file: old).compare(TypeRegistry.read(new_xml, file: new))
       end
 
       def unpack(dump, to)

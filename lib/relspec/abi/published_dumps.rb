@@ -50,11 +50,13 @@ module Relspec
       # Copies the dumps of +records+ (Builder::BuildResults::Record, built,
       # in +target_dir+) into the repository and writes the index; true when
       # something changed. Dumps of sources not built now are kept (an
-      # earlier publish of the same release).
-      def self.write(repository, target, target_dir, records)
+      # earlier publish of the same release): those of +current+, the index
+      # as read before anything was published (or as made again,
+      # RebuiltDumps).
+      def self.write(repository, target, target_dir, records, current: read(repository, target))
         check(repository, target, records)
         dir = dir(repository, target)
-        known = read(repository, target).entries.to_h do |entry|
+        known = current.entries.to_h do |entry|
           [[entry.source, entry.library], entry.dup.tap { |kept| kept.file = entry.file.delete_prefix("#{dir}/") }]
         end
         records.each do |record|

@@ -1,9 +1,7 @@
 # frozen_string_literal: true
 
-require "fileutils"
 require_relative "../cache_dir"
-require_relative "../atomic_file"
-require_relative "../error"
+require_relative "../cache_writer"
 
 module Relspec
   module Apt
@@ -14,18 +12,17 @@ module Relspec
     # The cache is only ever a shortcut: an entry that is not a regular file
     # (a directory, a FIFO) reads as missing without being opened for long
     # (a FIFO would block), and an entry that cannot be written (a directory
-    # in the way, a full file system) is noted once on +notes+ and skipped.
+    # in the way, a full file system) is noted once and skipped (CacheWriter).
     class Cache
       # The XDG cache folder (read from the environment, never written to it).
       def self.default_dir
         CacheDir.for("apt")
       end
 
-      # +notes+: where the one line about an unwritable cache goes.
-      def initialize(dir, notes: $stderr)
+      # +writer+: the CacheWriter the run's caches share (one note for all).
+      def initialize(dir, writer: CacheWriter.new)
         @dir = dir
-        @notes = notes
-        @noted = false
+        @writer = writer
       end
 
       def read(release_sha256, path)
@@ -42,23 +39,11 @@ module Relspec
       def write(release_sha256, path, bytes)
         return unless @dir
 
-        target = location(release_sha256, path)
-        FileUtils.mkdir_p(File.dirname(target))
-        AtomicFile.write(target, bytes)
-      rescue SystemCallError, Relspec::Error => e
-        note(target, e)
+        @writer.write(location(release_sha256, path), bytes)
+        nil
       end
 
       private
-
-      def note(target, error)
-        return if @noted
-
-        @noted = true
-        reason = error.message.sub(/ @ .*/, "").sub(/\Acannot write \S+: /, "")
-        @notes&.puts("relspec: note: the cache entry #{target} cannot be written (#{reason}); " \
-                     "going on without it (only slower)")
-      end
 
       def location(release_sha256, path)
         File.join(@dir, release_sha256, path.tr("/", "_"))

@@ -1,9 +1,8 @@
 # frozen_string_literal: true
 
 require "digest"
-require "fileutils"
-require_relative "../atomic_file"
 require_relative "../cache_dir"
+require_relative "../cache_writer"
 
 module Relspec
   module Availability
@@ -20,9 +19,12 @@ module Relspec
         CacheDir.for("launchpad")
       end
 
-      # +dir+ nil: nothing is kept. +clock+ gives the current epoch seconds.
-      def initialize(dir, found_ttl: FOUND_TTL, missing_ttl: MISSING_TTL, clock: -> { Time.now.to_i })
+      # +dir+ nil: nothing is kept. +clock+ gives the current epoch seconds;
+      # +writer+: the CacheWriter the run's caches share.
+      def initialize(dir, found_ttl: FOUND_TTL, missing_ttl: MISSING_TTL, clock: -> { Time.now.to_i },
+                     writer: CacheWriter.new)
         @dir = dir
+        @writer = writer
         @found_ttl = found_ttl
         @missing_ttl = missing_ttl
         @clock = clock
@@ -45,11 +47,7 @@ module Relspec
       def write(key, found)
         return unless @dir
 
-        path = location(key)
-        FileUtils.mkdir_p(File.dirname(path))
-        AtomicFile.write(path, "#{found ? 'found' : 'missing'} #{@clock.call}\n")
-      rescue SystemCallError
-        nil # a cache that cannot be written is only slower
+        @writer.write(location(key), "#{found ? 'found' : 'missing'} #{@clock.call}\n")
       end
 
       private

@@ -1,13 +1,12 @@
 # frozen_string_literal: true
 
 require "digest"
-require "fileutils"
 require_relative "../cache_dir"
+require_relative "../cache_writer"
 require "find"
 require "psych"
 require_relative "snapshot_source"
 require_relative "git_state"
-require_relative "../atomic_file"
 
 module Relspec
   class Catalog
@@ -25,8 +24,11 @@ module Relspec
         CacheDir.for("catalog")
       end
 
-      def initialize(dir = self.class.default_dir)
+      # +writer+: the CacheWriter the run's caches share (an entry that
+      # cannot be written is noted once, and the catalog is used as loaded).
+      def initialize(dir = self.class.default_dir, writer: CacheWriter.new)
         @dir = dir
+        @writer = writer
       end
 
       # The catalog of +root+ for +distributions+, from the cache when its
@@ -68,12 +70,9 @@ module Relspec
       end
 
       def store(path, fingerprint, catalog)
-        FileUtils.mkdir_p(File.dirname(path))
         document = { "relspec" => loader_version, "fingerprint" => fingerprint,
                      "catalog" => { SnapshotSource::FORMAT_KEY => SnapshotSource::FORMAT_VERSION }.merge(catalog.to_h) }
-        AtomicFile.write(path, Yaml::Writer.dump(document))
-      rescue SystemCallError
-        nil # a cache that cannot be written is only slower
+        @writer.write(path, Yaml::Writer.dump(document))
       end
 
       # Changes to relspec's reading code make old entries useless.

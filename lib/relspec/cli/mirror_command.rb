@@ -17,6 +17,7 @@ module Relspec
         @install = options[:install]
         @timeout = options[:timeout]
         @io = out_io
+        @err = err_io
         @progress = options[:quiet] ? nil : err_io
       end
 
@@ -25,7 +26,7 @@ module Relspec
                    Mirror.verify(directory, install: @install)
                  else
                    Mirror.run(spec, out: output, targets: @targets, timeout: @timeout, progress: @progress,
-                                    install: @install)
+                                    install: @install, notes: @err)
                  end
         @io.write(report.render(@format))
         report.complete? ? 0 : 1

@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require_relative "../publish"
+require_relative "../printable"
 
 module Relspec
   module CLI
@@ -19,11 +20,9 @@ module Relspec
       def call
         result = Publish.run(@path, out: @out, target: @target, timeout: @timeout,
                                     waiting: ->(what) { @err.puts("waiting for #{what} to finish…") })
-        if result.stale_lock
-          @err.puts("removed reprepro's stale lock #{result.stale_lock} (no reprepro uses the repository: " \
-                    "one was killed before it could remove it)")
-        end
+        @err.puts(Publish::StaleRepreproLock.note(result.stale_lock)) if result.stale_lock
         note_recovered(result)
+        result.abi_rebuilt.each { |rebuilt| note_rebuilt(rebuilt) }
         result.targets.each { |target| report(target) }
         @io.puts("#{result.release}: #{result.repository}: #{result.osdeps_written.zero? ? 'osdeps unchanged' : "wrote #{result.osdeps_written} osdeps files"}")
         note_missing(result.osdeps_missing)
@@ -45,6 +44,16 @@ module Relspec
         return unless result.recovered
 
         @err.puts("the last publish into #{result.repository} was interrupted and #{RECOVERED.fetch(result.recovered)}")
+      end
+
+      # An ABI index that could not be read, made again (Abi::RebuiltDumps).
+      def note_rebuilt(rebuilt)
+        index = File.join(rebuilt.dumps.dir, Abi::PublishedDumps::FILE_NAME)
+        # names of files a repository holds: escaped, as every value from one
+        left_out = rebuilt.left_out.map { |path| Printable.text(path.delete_prefix("#{rebuilt.dumps.dir}/")) }
+        @err.puts("the ABI index #{index} could not be read (#{rebuilt.problem}); made it again from the " \
+                  "#{rebuilt.dumps.entries.size} dumps there that build-results.yml vouches for" \
+                  "#{"; left out, as no build vouches for them: #{left_out.join(', ')}" unless left_out.empty?}")
       end
 
       # Planned packages the osdeps files leave out, counted per target (the

@@ -7,6 +7,7 @@ require_relative "../atomic_file"
 require_relative "../error"
 require_relative "binary_index"
 require_relative "folder"
+require_relative "../publish/stale_reprepro_lock"
 
 module Relspec
   module Mirror
@@ -25,14 +26,22 @@ module Relspec
         @sign_with = sign_with
       end
 
-      # Takes the folder (Folder: one relspec made, never someone else's)
-      # and writes reprepro's configuration.
+      # Takes the folder (Folder: one relspec made, never someone else's),
+      # writes conf/, and removes reprepro's lock (db/lockfile) when no live
+      # reprepro uses the mirror (a run killed while reprepro worked left it,
+      # and every later reprepro would wait for it, then fail): publish's own
+      # rule, Publish::StaleRepreproLock. The removed lock's path, or nil.
       def configure
         Folder.claim(@dir)
         conf = File.join(@dir, "conf")
         FileUtils.mkdir_p(conf)
         AtomicFile.write(File.join(conf, "distributions"), distributions)
         AtomicFile.write(File.join(conf, "options"), "waitforlock 30\n")
+        begin
+          Publish::StaleRepreproLock.clear(@dir)
+        rescue SystemCallError => e # a db/lockfile that is a folder, a read-only db/
+          raise ToolError, "cannot remove reprepro's stale lock in #{@dir}/db: #{e.message.sub(/ @ .*/, '')}"
+        end
       end
 
       def index_path(target)

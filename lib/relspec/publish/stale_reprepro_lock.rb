@@ -39,6 +39,11 @@ module Relspec
         nil # the reprepro that held it has just finished
       end
 
+      # What a command says when #clear removed +lock+.
+      def note(lock)
+        "removed reprepro's stale lock #{lock} (no reprepro uses the repository: one was killed before it could remove it)"
+      end
+
       # The /proc folders of reprepro processes that are alive (a killed
       # one stays a zombie until its parent reaps it; it holds nothing).
       def live_reprepros(proc_root)

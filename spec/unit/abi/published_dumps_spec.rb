@@ -58,6 +58,22 @@ RSpec.describe Relspec::Abi::PublishedDumps do
     expect(described_class.read(repo, target).entries.map(&:library)).to eq(%w[liba2.so libb.so.1])
   end
 
+  it "keeps the dumps of +current+ (an index made again), not of the index on disk" do
+    repo = File.join(@dir, "repo")
+    out = File.join(@dir, "out")
+    FileUtils.mkdir_p(File.dirname(index_path))
+    File.write(index_path, "damaged: [\n")
+    kept = described_class::Entry.new(package: "b", source: "rock-r-b", version: "1", library: "libb.so.1",
+                                      file: File.join(File.dirname(index_path), "rock-r-b", "libb.so.1.abi.xml.gz"),
+                                      sha256: "b" * 64)
+    current = described_class.new(File.dirname(index_path), [kept])
+    described_class.write(repo, target, out, [record("rock-r-a", "a", "results/rock-r-a/liba.so.abi.xml.gz" => "a1")],
+                          current: current)
+    expect(described_class.read(repo, target).entries.map { |entry| [entry.library, entry.file] })
+      .to eq([["liba.so", File.join(File.dirname(index_path), "rock-r-a/liba.so.abi.xml.gz")],
+              ["libb.so.1", File.join(File.dirname(index_path), "rock-r-b/libb.so.1.abi.xml.gz")]])
+  end
+
   it "writes nothing for packages without dumps" do
     records = [record("rock-r-data", "data", "results/rock-r-data/x_1_all.deb" => "deb")]
     expect(described_class.write(File.join(@dir, "repo"), target, File.join(@dir, "out"), records)).to be(false)

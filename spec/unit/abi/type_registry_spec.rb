@@ -52,4 +52,36 @@ RSpec.describe Relspec::Abi::TypeRegistry do
     expect { described_class.parse("<html></html>", file: "x.tlb") }.to raise_error(Relspec::ToolError, /x.tlb is not a typelib registry/)
     expect { described_class.parse("<typelib><compound", file: "y.tlb") }.to raise_error(Relspec::ToolError, /y.tlb is not a typelib registry/)
   end
+
+  it "resolves the XML's own entities and character references in names, as typelib writes them" do
+    vector = '<container name="/std/vector&lt;/double&#62;" size="24" kind="/std/vector" of="/double"></container>'
+    expect(registry([vector]).types.keys).to eq(["/std/vector</double>"])
+  end
+
+  it "refuses a DTD before anything it defines is expanded, and an entity no DTD defined" do
+    laughs = %(<?xml version="1.0"?><!DOCTYPE typelib [<!ENTITY a "aaaaaaaaaa"><!ENTITY b "&a;&a;&a;&a;&a;">]>) +
+             '<typelib><null name="&b;"/></typelib>'
+    expect { described_class.parse(laughs, file: "l.tlb") }
+      .to raise_error(Relspec::ToolError, "l.tlb has a DTD (<!DOCTYPE>: entity definitions), which a typelib registry " \
+                                          "never has: refused, not compared")
+    expect { described_class.parse('<typelib><null name="/&b;"/></typelib>', file: "r.tlb") }
+      .to raise_error(Relspec::ToolError, 'r.tlb refers to the entity "&b;", which no typelib registry defines: refused, not compared')
+  end
+
+  it "bounds a registry's size before reading it, and its types while it reads" do
+    stub_const("#{described_class}::MAX_BYTES", 118)
+    stub_const("#{described_class}::MAX_TYPES", 2)
+    expect { described_class.parse("<typelib>#{' ' * 100}</typelib>", file: "big.tlb") }
+      .to raise_error(Relspec::ToolError, "big.tlb is a type registry of 119 bytes, more than 118: not compared")
+    expect(registry(['<null name="/a"/>', '<null name="/b"/>']).types.size).to eq(2)
+    expect { registry(['<null name="/a"/>', '<null name="/b"/>', '<null name="/c"/>']) }
+      .to raise_error(Relspec::ToolError, "std.tlb is a type registry of more than 2 types: not compared (the rest was not read)")
+  end
+
+  it "reads a file's size before its bytes", :tmpdir do
+    path = File.join(@dir, "big.tlb")
+    File.write(path, "<typelib>#{' ' * (8 << 20)}</typelib>")
+    expect(File).not_to receive(:read)
+    expect { described_class.read(path, file: "big.tlb") }.to raise_error(Relspec::ToolError, "big.tlb is a type registry of 8388627 bytes, more than 8388608: not compared")
+  end
 end

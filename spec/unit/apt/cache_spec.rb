@@ -9,7 +9,7 @@ require "relspec/apt/cache"
 # written is noted once and skipped.
 RSpec.describe Relspec::Apt::Cache, :tmpdir do
   let(:notes) { StringIO.new }
-  let(:cache) { described_class.new(@dir, notes: notes) }
+  let(:cache) { described_class.new(@dir, writer: Relspec::CacheWriter.new(notes: notes)) }
   let(:sha) { "a" * 64 }
 
   it "reads back what it wrote, and nothing without a folder" do
