@@ -116,16 +116,22 @@ module Relspec
         Apt::HostLists.new.suite_indices(target.codename, target.arch).each do |listed, text|
           fetcher = Apt::Fetcher.new(listed.repo_uri, **@fetcher_options)
           index.add(text, origin: Origin.new(label: listed.suite, fetcher: fetcher, distribution: true),
-                          where: "#{listed.repo_uri} (#{listed.suite}/#{listed.component}/binary-#{target.arch})")
+                          where: "#{listed.repo_uri} (#{listed.suite}/#{listed.component}/binary-#{listed.arch})")
         end
       end
 
+      # Each component's index of the target's architecture and its
+      # binary-all where apt reads one (Repository#index_architectures).
       def archive_into(index, archive, target)
         reader = Plan::Ancestors.archive_reader(archive, @spec_dir, @fetcher_options, @cache)
-        archive.read_components.each do |component|
-          text = reader.packages_text(target.codename, target.arch, component: component)
+        architectures = reader.index_architectures(target.codename, target.arch)
+        archive.read_components.product(architectures).each do |component, arch|
+          text = reader.packages_text(target.codename, arch, component: component)
           index.add(text, origin: Origin.new(label: target.codename, fetcher: reader.fetcher, distribution: true),
-                          where: "#{reader.url} (#{target.codename}/#{component}/binary-#{target.arch})")
+                          where: "#{reader.url} (#{target.codename}/#{component}/binary-#{arch})")
+        rescue Apt::Repository::Missing
+          # a binary-all the Release file does not list
+          raise if arch == target.arch
         end
       end
     end
