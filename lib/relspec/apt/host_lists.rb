@@ -29,9 +29,9 @@ module Relspec
       # binary-all only where apt keeps one (it skips it where the archive
       # says No-Support-for-Architecture-all: Packages), as the stored
       # InRelease allows it.
-      def index_architectures(codename, arch)
-        all = targets.find { |target| target.suite == codename && target.arch == "all" }
-        all && release_of(all).package_architectures(arch).include?("all") ? [arch, "all"].uniq : [arch]
+      def index_architectures(codename, arch, component: "main")
+        all = targets.find { |target| target.suite == codename && target.arch == "all" && target.component == component }
+        all && release_of(all).package_architectures(arch, component: component).include?("all") ? [arch, "all"] : [arch]
       end
 
       def packages(codename, arch, component: "main")
@@ -63,7 +63,7 @@ module Relspec
       def suite_indices(codename, arch, component: "main")
         suites = [codename, "#{codename}-updates", "#{codename}-security"]
         found = targets.select do |target|
-          suites.include?(target.suite) && index_architectures(target.suite, arch).include?(target.arch) &&
+          suites.include?(target.suite) && index_architectures(target.suite, arch, component: component).include?(target.arch) &&
             target.component == component && distribution?(target)
         end
         target_for(codename, arch, component) if found.none? { |target| target.arch == arch } # says what is missing

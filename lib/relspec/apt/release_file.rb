@@ -55,14 +55,18 @@ module Relspec
         @by_hash
       end
 
-      # The architectures whose Packages indices apt reads for +arch+:
-      # binary-all too where the Release file has it (Architectures names
-      # "all", or names nothing) unless it says "No-Support-for-Architecture-all:
-      # Packages" (Debian since 2017: its Architecture: all packages are in
-      # every binary-<arch> index, and binary-all may be stale).
-      def package_architectures(arch)
-        all = (architectures.empty? || architectures.include?("all")) && !@no_support_for_all.include?("Packages")
-        all && arch != "all" ? [arch, "all"] : [arch]
+      # The architectures whose Packages indices apt reads for +arch+ in
+      # +component+: binary-all too where the Release file lists one and has
+      # the architecture (Architectures names "all", or names nothing),
+      # unless it says "No-Support-for-Architecture-all: Packages" (Debian
+      # since 2017: its Architecture: all packages are in every
+      # binary-<arch> index, and its binary-all may be stale).
+      def package_architectures(arch, component: "main")
+        return [arch] if arch == "all" || @no_support_for_all.include?("Packages")
+        return [arch] unless architectures.empty? || architectures.include?("all")
+
+        listed = %w[Packages.xz Packages.gz Packages].any? { |name| checksums.key?("#{component}/binary-all/#{name}") }
+        listed ? [arch, "all"] : [arch]
       end
 
       def checksum(path)

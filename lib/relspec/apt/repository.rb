@@ -64,8 +64,8 @@ module Relspec
       # +codename+ (ReleaseFile#package_architectures): what every reader of
       # a distribution's packages reads, so that an Architecture: all
       # package is found where apt finds it.
-      def index_architectures(codename, arch)
-        release(codename).package_architectures(arch)
+      def index_architectures(codename, arch, component: "main")
+        release(codename).package_architectures(arch, component: component)
       end
 
       # The Packages index of +codename+/+component+/+arch+.

@@ -66,9 +66,8 @@ module Relspec
 
       def suite_names(target, suffix)
         suite = "#{target.codename}#{suffix}"
-        architectures = @reader.index_architectures(suite, target.arch)
         @components.flat_map do |component|
-          architectures.filter_map do |arch|
+          @reader.index_architectures(suite, target.arch, component: component).filter_map do |arch|
             index_names(suite, arch, component)
           rescue Apt::Repository::Missing => e
             raise Unavailable, e.message if suffix.empty? && arch == target.arch

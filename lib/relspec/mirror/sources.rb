@@ -124,14 +124,12 @@ module Relspec
       # binary-all where apt reads one (Repository#index_architectures).
       def archive_into(index, archive, target)
         reader = Plan::Ancestors.archive_reader(archive, @spec_dir, @fetcher_options, @cache)
-        architectures = reader.index_architectures(target.codename, target.arch)
-        archive.read_components.product(architectures).each do |component, arch|
-          text = reader.packages_text(target.codename, arch, component: component)
-          index.add(text, origin: Origin.new(label: target.codename, fetcher: reader.fetcher, distribution: true),
-                          where: "#{reader.url} (#{target.codename}/#{component}/binary-#{arch})")
-        rescue Apt::Repository::Missing
-          # a binary-all the Release file does not list
-          raise if arch == target.arch
+        archive.read_components.each do |component|
+          reader.index_architectures(target.codename, target.arch, component: component).each do |arch|
+            text = reader.packages_text(target.codename, arch, component: component)
+            index.add(text, origin: Origin.new(label: target.codename, fetcher: reader.fetcher, distribution: true),
+                            where: "#{reader.url} (#{target.codename}/#{component}/binary-#{arch})")
+          end
         end
       end
     end

@@ -31,11 +31,7 @@ module Relspec
 
       # The index of +arch+ and the binary-all apt reads beside it, if any.
       def repository_indices(repository, codename, arch)
-        repository.index_architectures(codename, arch).filter_map do |read|
-          repository.packages(codename, read)
-        rescue Apt::Repository::Missing
-          raise if read == arch
-        end
+        repository.index_architectures(codename, arch).map { |read| repository.packages(codename, read) }
       end
 
       def read_file(path)

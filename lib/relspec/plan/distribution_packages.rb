@@ -53,16 +53,14 @@ module Relspec
       # binary-all where apt reads one (ruby-<gem> packages are
       # Architecture: all).
       def self.versions(repository, archive, target, wanted, cache)
-        architectures = repository.index_architectures(target.codename, target.arch)
         found = Hash.new { |hash, name| hash[name] = [] }
-        archive.read_components.product(architectures).each do |component, arch|
-          index = ArchiveVersions.of(repository, target, component, cache, arch: arch)
-          names = wanted.is_a?(Regexp) ? index.names.grep(wanted) : wanted
-          names.each { |name| found[name] << index.version(name) if index.version(name) }
-          index.each_provided(wanted) { |name, version| found[name] << version }
-        rescue Apt::Repository::Missing
-          # a binary-all the Release file does not list: nothing more to read
-          raise if arch == target.arch
+        archive.read_components.each do |component|
+          repository.index_architectures(target.codename, target.arch, component: component).each do |arch|
+            index = ArchiveVersions.of(repository, target, component, cache, arch: arch)
+            names = wanted.is_a?(Regexp) ? index.names.grep(wanted) : wanted
+            names.each { |name| found[name] << index.version(name) if index.version(name) }
+            index.each_provided(wanted) { |name, version| found[name] << version }
+          end
         end
         found.to_h { |name, versions| [name, newest_first(versions)] }
       end

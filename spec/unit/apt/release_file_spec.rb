@@ -5,15 +5,18 @@ require "relspec/apt/release_file"
 
 # How apt reads an archive's indices, from its Release file alone.
 RSpec.describe Relspec::Apt::ReleaseFile do
-  def release(fields)
+  def release(fields, all: true)
+    listed_all = all ? " #{'b' * 64} 10 main/binary-all/Packages.xz\n" : ""
     described_class.parse("Codename: trixie\n#{fields}SHA256:\n #{'a' * 64} 10 main/binary-amd64/Packages\n " \
-                          "../../etc/passwd 10 main/binary-arm64/Packages\n")
+                          "../../etc/passwd 10 main/binary-arm64/Packages\n#{listed_all}")
   end
 
-  it "reads binary-all beside binary-<arch> only where the archive has one and does not say its packages are elsewhere" do
+  it "reads binary-all beside binary-<arch> only where the archive lists one and does not say its packages are elsewhere" do
     expect(release("Architectures: all amd64\nNo-Support-for-Architecture-all: Packages\n").package_architectures("amd64"))
       .to eq(["amd64"])
     expect(release("Architectures: all amd64\n").package_architectures("amd64")).to eq(%w[amd64 all])
+    expect(release("Architectures: all amd64\n", all: false).package_architectures("amd64")).to eq(["amd64"])
+    expect(release("Architectures: all amd64\n").package_architectures("amd64", component: "contrib")).to eq(["amd64"])
     expect(release("Architectures: amd64\n").package_architectures("amd64")).to eq(["amd64"])
     expect(release("").package_architectures("amd64")).to eq(%w[amd64 all])
     expect(release("Architectures: all amd64\n").package_architectures("all")).to eq(["all"])

@@ -29,7 +29,7 @@ RSpec.describe Relspec::Plan::DistributionPackages do
   # +indices+: arch => PackageIndex, the architectures apt reads in order.
   def reader(indices)
     Struct.new(:indices) do
-      def index_architectures(_codename, _arch)
+      def index_architectures(_codename, _arch, **)
         indices.keys
       end
 
