@@ -46,8 +46,9 @@ RSpec.describe "relspec check on an archive in the middle of an update" do
     YAML
   end
 
-  def check
-    relspec("check", "specs/app.yml", chdir: @base, env: { "XDG_CACHE_HOME" => File.join(@base, "cache-#{rand(1 << 30)}") })
+  def check(command = "check", *args)
+    relspec(command, "specs/app.yml", *args, chdir: @base,
+                                             env: { "XDG_CACHE_HOME" => File.join(@base, "cache-#{rand(1 << 30)}") })
   end
 
   it "reads the by-hash files, and not the stale binary-all, where apt would" do
@@ -57,6 +58,8 @@ RSpec.describe "relspec check on an archive in the middle of an update" do
     expect(run.stdout).to match(%r{\Atrixie/amd64: [1-9]\d* relations checked \(apt: #{Regexp.escape(@server.url)}\)\n\z})
     expect(@server.requests.grep(%r{binary-amd64/})).to all(include("/by-hash/SHA256/"))
     expect(@server.requests.grep(/binary-all/)).to eq([])
+    compiled = check("compile", "--out", "out-by-hash")
+    expect(compiled.exit_code).to eq(0), compiled.stderr
   end
 
   it "says once that the mirror may be syncing when the canonical file is stale and there is no by-hash file" do
@@ -73,5 +76,15 @@ RSpec.describe "relspec check on an archive in the middle of an update" do
     # by hash (missing), by name; the same once more; nothing after
     expect(@server.requests.grep(%r{binary-amd64/}).map { |path| path[/by-hash|Packages\.gz\z/] })
       .to eq(%w[by-hash Packages.gz by-hash Packages.gz])
+  end
+
+  it "makes compile's check refuse the release, writing nothing, with the same message" do
+    serve(by_hash: false)
+    run = check("compile", "--out", "out-stale")
+    expect(run.exit_code).to eq(1)
+    expect(run.stderr).to include("could not be checked: #{@server.url}/dists/trixie/main/binary-amd64/Packages.gz " \
+                                  "does not match the SHA256 of the Release file", "(mirror sync in progress?)")
+    expect(run.stderr).not_to match(CliRunner::BACKTRACE)
+    expect(File.exist?(File.join(@base, "out-stale"))).to be(false)
   end
 end
