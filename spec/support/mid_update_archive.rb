@@ -6,7 +6,7 @@ require "zlib"
 
 # Turns one distribution of a reprepro repository (AptRepositoryBuilder)
 # into a Debian archive caught in the middle of a mirror sync, as
-# deb.debian.org's trixie was when relspec first read it: its Release file
+# Debian's own trixie mirrors were when relspec first read them: its Release file
 # says `Acquire-By-Hash: yes` and `No-Support-for-Architecture-all:
 # Packages` (Architecture: all packages are in binary-<arch>), the
 # by-hash/SHA256/<digest> files hold what the Release file lists, while the
