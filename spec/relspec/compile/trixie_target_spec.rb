@@ -13,7 +13,7 @@ RSpec.describe "a release for trixie and bookworm" do
   before(:all) do
     @base = Dir.mktmpdir("relspec-trixie")
     builder = WorkspaceBuilder.new(@base)
-    builder.package("base/app", type: :cmake, date: "2020-06-02T10:00:00Z", osdeps: %w[libx])
+    builder.package("base/app", type: :cmake, date: "2020-06-02T10:00:00Z", osdeps: %w[libx ruby])
     builder.osdeps(<<~YAML)
       libx:
         debian:
@@ -22,6 +22,11 @@ RSpec.describe "a release for trixie and bookworm" do
           default: libx-old-dev
     YAML
     builder.create
+    # what autoproj loads for the target's Ruby: `ruby` is ruby33 on trixie
+    sets = File.join(builder.root, "package_sets", builder.package_set_name)
+    { "31" => "ruby3.1-dev", "33" => "ruby3.3-dev" }.each do |version, name|
+      File.write(File.join(sets, "#{builder.package_set_name}.osdeps-ruby#{version}"), "ruby#{version}:\n  debian: #{name}\n")
+    end
     FileUtils.mkdir_p(File.join(@base, "specs"))
     File.write(File.join(@base, "specs", "two.yml"), <<~YAML)
       release: two
@@ -54,13 +59,14 @@ RSpec.describe "a release for trixie and bookworm" do
     expect(@plan.stdout).to include("trixie/amd64")
   end
 
-  it "gives each target its own version suffix, debhelper compat and osdeps entry" do
-    %w[bookworm trixie].each do |codename|
+  it "gives each target its own version suffix, debhelper compat, osdeps entry and Ruby's osdeps" do
+    { "bookworm" => "3.1", "trixie" => "3.3" }.each do |codename, ruby|
       dsc = File.read(source_file(codename, ".dsc"))
       expect(dsc).to match(/^Version: \S+-1~#{codename}$/)
       build_depends = dsc[/^Build-Depends: (.*)$/, 1]
-      expect(build_depends).to include("debhelper-compat (= 13)", "libx-#{codename}-dev")
+      expect(build_depends).to include("debhelper-compat (= 13)", "libx-#{codename}-dev", "ruby#{ruby}-dev")
       expect(build_depends).not_to include("libx-old-dev")
+      expect(build_depends.scan(/ruby\d\.\d-dev/)).to eq(["ruby#{ruby}-dev"])
     end
   end
 
