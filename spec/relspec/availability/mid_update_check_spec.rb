@@ -87,4 +87,16 @@ RSpec.describe "relspec check on an archive in the middle of an update" do
     expect(run.stderr).not_to match(CliRunner::BACKTRACE)
     expect(File.exist?(File.join(@base, "out-stale"))).to be(false)
   end
+
+  it "refuses a Release file whose listed digest is no SHA256 before it names a file to fetch" do
+    serve
+    release = File.join(@archive, "dists", "trixie", "Release")
+    File.write(release, File.read(release).sub(%r{^ \h{64}( +\d+ main/binary-amd64/Packages.gz)$}, ' ../../../../etc/passwd\1'))
+    run = check
+    expect(run.exit_code).to eq(1)
+    expect(run.stdout).to eq("trixie/amd64: could not be checked: #{@server.url}/dists/trixie/Release: the SHA256 of " \
+                             "main/binary-amd64/Packages.gz is not 64 hex digits (../../../../etc/passwd): a malformed " \
+                             "Release file (apt: #{@server.url})\n")
+    expect(@server.requests.grep(/passwd|binary-amd64/)).to eq([])
+  end
 end
