@@ -25,6 +25,15 @@ module Relspec
         "this machine's apt lists"
       end
 
+      # The architectures whose indices apt fetched for +arch+ in +codename+:
+      # binary-all only where apt keeps one (it skips it where the archive
+      # says No-Support-for-Architecture-all: Packages), as the stored
+      # InRelease allows it.
+      def index_architectures(codename, arch, component: "main")
+        all = targets.find { |target| target.suite == codename && target.arch == "all" && target.component == component }
+        all && release_of(all).package_architectures(arch, component: component).include?("all") ? [arch, "all"] : [arch]
+      end
+
       def packages(codename, arch, component: "main")
         PackageIndex.parse(packages_text(codename, arch, component: component))
       rescue Deb822::ParseError, ArgumentError, PackageIndex::Invalid => e
@@ -44,7 +53,8 @@ module Relspec
       end
 
       # The indices of +codename+ and of its point-release suites
-      # (codename-updates, codename-security) that apt has for +arch+, each
+      # (codename-updates, codename-security) that apt has for +arch+ (and
+      # its binary-all where apt reads one: #index_architectures), each
       # as [Target, verified text]: what a machine of that distribution
       # installs from. Only a distribution's archive says who made it
       # (Origin: Debian, Ubuntu): a repository of releases served under the
@@ -53,10 +63,10 @@ module Relspec
       def suite_indices(codename, arch, component: "main")
         suites = [codename, "#{codename}-updates", "#{codename}-security"]
         found = targets.select do |target|
-          suites.include?(target.suite) && target.arch == arch && target.component == component &&
-            distribution?(target)
+          suites.include?(target.suite) && index_architectures(target.suite, arch, component: component).include?(target.arch) &&
+            target.component == component && distribution?(target)
         end
-        target_for(codename, arch, component) if found.empty? # says what is missing, as for packages
+        target_for(codename, arch, component) if found.none? { |target| target.arch == arch } # says what is missing
         found.map { |target| [target, verified_text(target)] }
       end
 

@@ -7,10 +7,21 @@ require_relative "deb822"
 module Relspec
   module Apt
     # A repository's dists/<codename>/Release (or the content of InRelease):
-    # which architectures and components it has, and the SHA256 and size of
-    # every index file, against which downloads are verified.
+    # which architectures and components it has, the SHA256 and size of
+    # every index file, against which downloads are verified, and how apt
+    # reads its indices (Acquire-By-Hash, No-Support-for-Architecture-all).
     class ReleaseFile
-      Checksum = Struct.new(:sha256, :size)
+      # A SHA256 as the Release file gives it: untrusted text until #valid?
+      # says it is 64 lowercase hex digits (only then may it name a by-hash
+      # file).
+      Checksum = Struct.new(:sha256, :size) do
+        def valid?
+          sha256.match?(/\A[0-9a-f]{64}\z/)
+        end
+      end
+
+      # apt's words for yes in a boolean field (StringToBool).
+      YES = %w[yes true with on enable 1].freeze
 
       attr_reader :codename, :suite, :origin, :architectures, :components, :checksums, :sha256, :valid_until
 
@@ -32,7 +43,30 @@ module Relspec
         @components = fields.fetch("Components", "").split
         @checksums = parse_checksums(fields["SHA256"])
         @sha256 = sha256
+        @by_hash = YES.include?(fields.fetch("Acquire-By-Hash", "").strip.downcase)
+        @no_support_for_all = fields.fetch("No-Support-for-Architecture-all", "").split.freeze
         freeze
+      end
+
+      # "Acquire-By-Hash: yes": each index is also served as
+      # <its folder>/by-hash/SHA256/<digest>, which a mirror in the middle of
+      # an update keeps consistent with this Release file.
+      def by_hash?
+        @by_hash
+      end
+
+      # The architectures whose Packages indices apt reads for +arch+ in
+      # +component+: binary-all too where the Release file lists one and has
+      # the architecture (Architectures names "all", or names nothing),
+      # unless it says "No-Support-for-Architecture-all: Packages" (Debian
+      # since 2017: its Architecture: all packages are in every
+      # binary-<arch> index, and its binary-all may be stale).
+      def package_architectures(arch, component: "main")
+        return [arch] if arch == "all" || @no_support_for_all.include?("Packages")
+        return [arch] unless architectures.empty? || architectures.include?("all")
+
+        listed = %w[Packages.xz Packages.gz Packages].any? { |name| checksums.key?("#{component}/binary-all/#{name}") }
+        listed ? [arch, "all"] : [arch]
       end
 
       def checksum(path)

@@ -33,12 +33,18 @@ module Relspec
       MAX_SIGNATURE_BYTES = 1024 * 1024
 
       COMPRESSIONS = [["Packages.xz", :xz], ["Packages.gz", :gzip], ["Packages", :none]].freeze
+      # How long a remote index that does not match the Release file is left
+      # before it is read the one more time.
+      RETRY_PAUSE = 1.0
 
       attr_reader :fetcher
 
       # +clock+ gives the current time, against which Valid-Until is checked.
-      def initialize(fetcher, keyring: nil, trusted: false, cache: Cache.new(nil), clock: -> { Time.now })
+      # +retry_pause+: seconds before a mismatching index is read again.
+      def initialize(fetcher, keyring: nil, trusted: false, cache: Cache.new(nil), clock: -> { Time.now },
+                     retry_pause: RETRY_PAUSE)
         @clock = clock
+        @retry_pause = retry_pause
         @fetcher = fetcher
         @keyring = keyring
         @trusted = trusted
@@ -52,6 +58,14 @@ module Relspec
 
       def release(codename)
         @releases[codename] ||= read_release(codename)
+      end
+
+      # The architectures whose Packages indices apt reads for +arch+ in
+      # +codename+ (ReleaseFile#package_architectures): what every reader of
+      # a distribution's packages reads, so that an Architecture: all
+      # package is found where apt finds it.
+      def index_architectures(codename, arch, component: "main")
+        release(codename).package_architectures(arch, component: component)
       end
 
       # The Packages index of +codename+/+component+/+arch+.
@@ -201,26 +215,64 @@ module Relspec
 
       def index_bytes(codename, release, path)
         checksum = release.checksum(path)
+        unless checksum.valid?
+          raise Error, "#{url}/dists/#{codename}/Release: the SHA256 of #{path} is not 64 hex digits " \
+                       "(#{Printable.text(checksum.sha256[0, 80])}): a malformed Release file"
+        end
         cached = @fetcher.remote? ? @cache.read(release.sha256, "#{codename}/#{path}") : nil
         return cached if cached && Digest::SHA256.hexdigest(cached) == checksum.sha256
 
-        where = "#{url}/dists/#{codename}/#{path}"
-        # the Release file says how large the index is: never read past that
-        bytes = @fetcher.fetch("dists/#{codename}/#{path}", max_bytes: checksum.size)
-        raise MissingIndex, "#{where} is listed in the Release file but missing" unless bytes
-
-        verify(bytes, checksum, where)
+        bytes = matching_bytes(codename, release, path)
         @cache.write(release.sha256, "#{codename}/#{path}", bytes) if @fetcher.remote?
         bytes
       rescue Fetcher::Failure => e
         raise Error, e.message
       end
 
-      def verify(bytes, checksum, where)
-        return if bytes.bytesize == checksum.size && Digest::SHA256.hexdigest(bytes) == checksum.sha256
+      # The bytes of +path+ that match the Release file. A mismatch is read
+      # once more after RETRY_PAUSE (the index may have been replaced
+      # between the Release file and it); one that remains is the archive's
+      # state, said as apt says it.
+      def matching_bytes(codename, release, path)
+        checksum = release.checksum(path)
+        _, bytes = index_download(codename, release, path)
+        return bytes if matches?(bytes, checksum)
 
-        raise Error, "#{where} does not match the SHA256 of the Release file " \
-                     "(got #{bytes.bytesize} bytes, expected #{checksum.size})"
+        sleep(@retry_pause) if @fetcher.remote?
+        where, bytes = index_download(codename, release, path)
+        return bytes if matches?(bytes, checksum)
+
+        raise Error, "#{where} does not match the SHA256 of the Release file (#{mismatch(bytes, checksum)}), " \
+                     "also when read again: the archive may be in the middle of an update (mirror sync in " \
+                     "progress?); try again later, or use another mirror"
+      end
+
+      # [where, bytes] of +path+: by its digest where the Release file
+      # offers that (apt's Acquire-By-Hash), else, or when the mirror lacks
+      # that file, by its name.
+      def index_download(codename, release, path)
+        checksum = release.checksum(path)
+        if release.by_hash?
+          hashed = "dists/#{codename}/#{File.dirname(path)}/by-hash/SHA256/#{checksum.sha256}"
+          bytes = @fetcher.fetch(hashed, max_bytes: checksum.size)
+          return [@fetcher.url_of(hashed), bytes] if bytes
+        end
+        where = "#{url}/dists/#{codename}/#{path}"
+        # the Release file says how large the index is: never read past that
+        bytes = @fetcher.fetch("dists/#{codename}/#{path}", max_bytes: checksum.size)
+        raise MissingIndex, "#{where} is listed in the Release file but missing" unless bytes
+
+        [where, bytes]
+      end
+
+      def matches?(bytes, checksum)
+        bytes.bytesize == checksum.size && Digest::SHA256.hexdigest(bytes) == checksum.sha256
+      end
+
+      def mismatch(bytes, checksum)
+        return "got #{bytes.bytesize} bytes, expected #{checksum.size}" unless bytes.bytesize == checksum.size
+
+        "got SHA256 #{Digest::SHA256.hexdigest(bytes)}, expected #{checksum.sha256}"
       end
 
       def decompress(bytes, kind, where)

@@ -10,7 +10,8 @@ module Relspec
     # Availability from a distribution's apt archive (or this machine's
     # lists): the Packages indices of `<codename>`, `<codename>-updates` and
     # `<codename>-security`, every configured component, the target's
-    # architecture and `all` where the archive lists a separate binary-all.
+    # architecture and `all` where apt reads a binary-all there
+    # (Repository#index_architectures).
     # The suites after the first are optional (Debian keeps -security in
     # another archive). Read with the same reader as ancestors (checksums,
     # signatures); the names of each index are cached by the index's SHA256
@@ -66,7 +67,7 @@ module Relspec
       def suite_names(target, suffix)
         suite = "#{target.codename}#{suffix}"
         @components.flat_map do |component|
-          [target.arch, "all"].uniq.filter_map do |arch|
+          @reader.index_architectures(suite, target.arch, component: component).filter_map do |arch|
             index_names(suite, arch, component)
           rescue Apt::Repository::Missing => e
             raise Unavailable, e.message if suffix.empty? && arch == target.arch
@@ -74,6 +75,11 @@ module Relspec
             nil
           end
         end
+      rescue Apt::Repository::Missing => e
+        # no such suite: -updates and -security are optional
+        raise Unavailable, e.message if suffix.empty?
+
+        []
       end
 
       # The cache entry's name says its format: entries written before the

@@ -118,16 +118,20 @@ module Relspec
         Apt::HostLists.new.suite_indices(target.codename, target.arch).each do |listed, text|
           fetcher = Apt::Fetcher.new(listed.repo_uri, **@fetcher_options)
           index.add(text, origin: Origin.new(label: listed.suite, fetcher: fetcher, distribution: true),
-                          where: "#{listed.repo_uri} (#{listed.suite}/#{listed.component}/binary-#{target.arch})")
+                          where: "#{listed.repo_uri} (#{listed.suite}/#{listed.component}/binary-#{listed.arch})")
         end
       end
 
+      # Each component's index of the target's architecture and its
+      # binary-all where apt reads one (Repository#index_architectures).
       def archive_into(index, archive, target)
         reader = Apt::Opening.archive(archive, @spec_dir, fetcher_options: @fetcher_options, cache: @cache)
         archive.read_components.each do |component|
-          text = reader.packages_text(target.codename, target.arch, component: component)
-          index.add(text, origin: Origin.new(label: target.codename, fetcher: reader.fetcher, distribution: true),
-                          where: "#{reader.url} (#{target.codename}/#{component}/binary-#{target.arch})")
+          reader.index_architectures(target.codename, target.arch, component: component).each do |arch|
+            text = reader.packages_text(target.codename, arch, component: component)
+            index.add(text, origin: Origin.new(label: target.codename, fetcher: reader.fetcher, distribution: true),
+                            where: "#{reader.url} (#{target.codename}/#{component}/binary-#{arch})")
+          end
         end
       end
     end

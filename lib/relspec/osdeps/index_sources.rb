@@ -16,17 +16,22 @@ module Relspec
       module_function
 
       def load(sources, codename:, arch:, trusted:, keyring:)
-        sources.map do |source|
+        sources.flat_map do |source|
           if source.match?(%r{\Ahttps?://})
-            repository = Apt::Repository.new(Apt::Fetcher.new(source), trusted: trusted, keyring: keyring)
-            repository.packages(codename, arch)
+            repository_indices(Apt::Repository.new(Apt::Fetcher.new(source), trusted: trusted, keyring: keyring),
+                               codename, arch)
           else
-            Apt::PackageIndex.parse(read_file(source))
+            [Apt::PackageIndex.parse(read_file(source))]
           end
         rescue Apt::Repository::Error, Apt::Deb822::ParseError, Apt::PackageIndex::Invalid, ToolError, Zlib::Error, SystemCallError => e
           raise InvalidInput, [Diagnostic.error("index", "cannot read the index #{source}: #{e.message}",
                                                 location: Location.file_only(source))]
         end
+      end
+
+      # The index of +arch+ and the binary-all apt reads beside it, if any.
+      def repository_indices(repository, codename, arch)
+        repository.index_architectures(codename, arch).map { |read| repository.packages(codename, read) }
       end
 
       def read_file(path)

@@ -30,13 +30,14 @@ module Relspec
 
       # The versions of the +target+'s +component+ in +repository+ (an
       # Apt::Repository or Apt::HostLists), from +cache+ (Apt::Cache) when
-      # it has them. Raises what +repository+ raises.
-      def self.of(repository, target, component, cache)
-        digest = repository.index_digest(target.codename, target.arch, component: component)
+      # it has them; +arch+: the index read (the target's, or "all").
+      # Raises what +repository+ raises.
+      def self.of(repository, target, component, cache, arch: target.arch)
+        digest = repository.index_digest(target.codename, arch, component: component)
         cached = load(cache.read(digest, CACHE_ENTRY))
         return cached if cached
 
-        versions = from_index(repository.packages(target.codename, target.arch, component: component))
+        versions = from_index(repository.packages(target.codename, arch, component: component))
         cache.write(digest, CACHE_ENTRY, versions.dump)
         versions
       end

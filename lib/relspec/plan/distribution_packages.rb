@@ -49,12 +49,18 @@ module Relspec
       # a real ruby-<gem> may be newer than what libruby provides (minitest:
       # 5.17.0 and libruby3.1's 5.15.0 on bookworm), when a gem's
       # requirement fits the provided one only.
+      # Each component's index of the target's architecture, and its
+      # binary-all where apt reads one (ruby-<gem> packages are
+      # Architecture: all).
       def self.versions(repository, archive, target, wanted, cache)
-        found = archive.read_components.each_with_object(Hash.new { |hash, name| hash[name] = [] }) do |component, out|
-          index = ArchiveVersions.of(repository, target, component, cache)
-          names = wanted.is_a?(Regexp) ? index.names.grep(wanted) : wanted
-          names.each { |name| out[name] << index.version(name) if index.version(name) }
-          index.each_provided(wanted) { |name, version| out[name] << version }
+        found = Hash.new { |hash, name| hash[name] = [] }
+        archive.read_components.each do |component|
+          repository.index_architectures(target.codename, target.arch, component: component).each do |arch|
+            index = ArchiveVersions.of(repository, target, component, cache, arch: arch)
+            names = wanted.is_a?(Regexp) ? index.names.grep(wanted) : wanted
+            names.each { |name| found[name] << index.version(name) if index.version(name) }
+            index.each_provided(wanted) { |name, version| found[name] << version }
+          end
         end
         found.to_h { |name, versions| [name, newest_first(versions)] }
       end

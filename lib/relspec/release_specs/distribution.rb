@@ -64,10 +64,15 @@ module Relspec
 
       # debhelper of each distribution (docs/compile.md): xenial 9.20160115,
       # stretch 10.2.5, bionic 11.1.6, buster 12.1.1, focal 12.10,
-      # bullseye 13.3.4, jammy 13.6, bookworm 13.11.4, noble 13.14.1. Their
-      # Ruby (the ruby package's default): xenial 2.3, stretch 2.3, bionic
-      # 2.5, buster 2.5, focal 2.7, bullseye 2.7, jammy 3.0, bookworm 3.1,
-      # noble 3.2.
+      # bullseye 13.3.4, jammy 13.6, bookworm 13.11.4, noble 13.14.1,
+      # trixie 13.24.2 (compat 14 is still experimental there). Their Ruby
+      # (the ruby package's default): xenial 2.3, stretch 2.3, bionic 2.5,
+      # buster 2.5, focal 2.7, bullseye 2.7, jammy 3.0, bookworm 3.1,
+      # noble 3.2, trixie 3.3. Labels: what autoproj reads of /etc/os-release
+      # (VERSION_ID, then the words of VERSION: "13 (trixie)"), plus
+      # "default". Debian testing (forky) is not built in: its os-release has
+      # no version and its /etc/debian_version says "forky/sid", so autoproj
+      # names it "unstable, sid", and its Ruby and debhelper still move.
       BUILTIN = [
         Distribution.define("xenial", "ubuntu", %w[16.04 xenial xerus default], debhelper_compat: 9, ruby: "2.3"),
         Distribution.define("bionic", "ubuntu", %w[18.04 bionic beaver default], debhelper_compat: 11, ruby: "2.5"),
@@ -77,7 +82,8 @@ module Relspec
         Distribution.define("stretch", "debian", %w[9 stretch default], debhelper_compat: 10, ruby: "2.3"),
         Distribution.define("buster", "debian", %w[10 buster default], debhelper_compat: 12, ruby: "2.5"),
         Distribution.define("bullseye", "debian", %w[11 bullseye default], debhelper_compat: 13, ruby: "2.7"),
-        Distribution.define("bookworm", "debian", %w[12 bookworm default], debhelper_compat: 13, ruby: "3.1")
+        Distribution.define("bookworm", "debian", %w[12 bookworm default], debhelper_compat: 13, ruby: "3.1"),
+        Distribution.define("trixie", "debian", %w[13 trixie default], debhelper_compat: 13, ruby: "3.3")
       ].to_h { |d| [d.codename, d] }.freeze
 
       # The built-ins named in +list+ ("bionic,buster"; nil: all of them); an

@@ -20,7 +20,7 @@ RSpec.describe "spec inheritance" do
       separate_prefixes: false
       package_prefix: rt
       maintainer: Root Team <root@example.org>
-      distributions: { trixie: { type: debian, labels: [13, trixie, default] } }
+      distributions: { duke: { type: debian, labels: [15, duke, default] } }
       gems: { rice: "4.0.2" }
       pins: { base/types: { commit: aaaaaaa }, base/cmake: { tag: v1 } }
       blacklist: [{ match: base/types, reason: root rebuilds it }]
@@ -69,7 +69,7 @@ RSpec.describe "spec inheritance" do
     expect(spec["separate_prefixes"]).to be(false)
     expect(spec["package_prefix"]).to eq("rt")
     expect(spec["maintainer"]).to eq("Root Team <root@example.org>")
-    expect(spec["distributions"]).to eq("trixie" => { "type" => "debian", "labels" => %w[13 trixie default] })
+    expect(spec["distributions"]).to eq("duke" => { "type" => "debian", "labels" => %w[15 duke default] })
     expect(spec["gems"]).to eq("rice" => "4.0.2")
     expect(spec.origin("targets").location.file).to end_with("root.yml")
   end
@@ -164,9 +164,9 @@ RSpec.describe "spec inheritance" do
   end
 
   it "checks target codenames against inherited distribution definitions" do
-    files = { "root" => root, "child" => "release: child\nparent: root\ntargets: { trixie: [amd64] }\n" }
-    expect(effective(files, "child")["targets"]).to eq("trixie" => ["amd64"])
-    files["lonely"] = "release: lonely\ntargets: { trixie: [amd64] }\n"
+    files = { "root" => root, "child" => "release: child\nparent: root\ntargets: { duke: [amd64] }\n" }
+    expect(effective(files, "child")["targets"]).to eq("duke" => ["amd64"])
+    files["lonely"] = "release: lonely\ntargets: { duke: [amd64] }\n"
     with_specs(files) do |dir|
       expect(resolve(dir, "lonely").errors.map(&:rule)).to eq(["unknown-distribution"])
     end

@@ -55,4 +55,63 @@ RSpec.describe Relspec::Apt::Repository, :tmpdir do
     expect { described_class.new(Relspec::Apt::Fetcher.new(@dir), trusted: true).listed_text("bookworm", "main/binary-amd64/Packages.gz") }
       .to raise_error(described_class::Error, /Packages.gz does not match the SHA256 of the Release file/)
   end
+
+  # An uncompressed index listed by the Release file, with by-hash on.
+  def write_hashed(listed_text, canonical_text, by_hash: true, sha: Digest::SHA256.hexdigest(listed_text))
+    folder = File.join(@dir, "dists", "trixie", "main", "binary-amd64")
+    FileUtils.mkdir_p(File.join(folder, "by-hash", "SHA256"))
+    File.binwrite(File.join(folder, "Packages"), canonical_text)
+    File.binwrite(File.join(folder, "by-hash", "SHA256", sha), listed_text) if by_hash && sha.match?(/\A\h{64}\z/)
+    File.write(File.join(@dir, "dists", "trixie", "Release"),
+               "Codename: trixie\nArchitectures: all amd64\nAcquire-By-Hash: yes\n" \
+               "No-Support-for-Architecture-all: Packages\nSHA256:\n #{sha} #{listed_text.bytesize} main/binary-amd64/Packages\n")
+  end
+
+  def recording(fetcher, asked)
+    fetcher.define_singleton_method(:fetch) do |path, **options|
+      asked << path
+      super(path, **options)
+    end
+    fetcher
+  end
+
+  let(:new_index) { "Package: cmake\nVersion: 3.31.6-2\n" }
+  let(:old_index) { "Package: cmake\nVersion: 3.25.1-1\n" }
+
+  it "reads an index by its hash when the Release file offers that, whatever the canonical file holds" do
+    write_hashed(new_index, old_index)
+    expect(repository.packages("trixie", "amd64")["cmake"].version).to eq("3.31.6-2")
+    expect(repository.index_architectures("trixie", "amd64")).to eq(["amd64"])
+  end
+
+  it "reads the canonical file when there is no by-hash file, once more when it does not match, then gives up" do
+    write_hashed(new_index, old_index, by_hash: false)
+    asked = []
+    fetcher = recording(Relspec::Apt::Fetcher.new(@dir), asked)
+    expect { described_class.new(fetcher, trusted: true).packages("trixie", "amd64") }
+      .to raise_error(described_class::Error, /Packages does not match the SHA256 of the Release file \(got SHA256 \h{64}, expected \h{64}\), also when read again: .*mirror sync in progress/)
+    hashed = "dists/trixie/main/binary-amd64/by-hash/SHA256/#{Digest::SHA256.hexdigest(new_index)}"
+    expect(asked.grep(/binary/)).to eq([hashed, "dists/trixie/main/binary-amd64/Packages"] * 2)
+  end
+
+  it "takes the second reading when the index was replaced in between (a sync that just finished)" do
+    write_hashed(new_index, old_index, by_hash: false)
+    new_text = new_index
+    fetcher = Relspec::Apt::Fetcher.new(@dir)
+    fetcher.define_singleton_method(:fetch) do |path, **options|
+      bytes = super(path, **options)
+      File.binwrite(File.join(base, path), new_text) if path.end_with?("binary-amd64/Packages")
+      bytes
+    end
+    expect(described_class.new(fetcher, trusted: true).packages("trixie", "amd64")["cmake"].version).to eq("3.31.6-2")
+  end
+
+  it "refuses a listed SHA256 that is not one before it names a file to fetch" do
+    write_hashed(new_index, old_index, sha: "../../../../etc/passwd")
+    asked = []
+    fetcher = recording(Relspec::Apt::Fetcher.new(@dir), asked)
+    expect { described_class.new(fetcher, trusted: true).packages("trixie", "amd64") }
+      .to raise_error(described_class::Error, %r{Release: the SHA256 of main/binary-amd64/Packages is not 64 hex digits \(\.\./\.\./\.\./\.\./etc/passwd\): a malformed Release file})
+    expect(asked.grep(/binary/)).to eq([])
+  end
 end

@@ -28,8 +28,8 @@ RSpec.describe "debian/ per debhelper compat level" do
 
   it "takes each distribution's level from the table" do
     levels = Relspec::ReleaseSpec::Distributions::BUILTIN.transform_values(&:debhelper_compat)
-    expect(levels.values_at("xenial", "stretch", "bionic", "buster", "focal", "bullseye", "jammy", "bookworm", "noble"))
-      .to eq([9, 10, 11, 12, 12, 13, 13, 13, 13])
+    expect(levels.values_at("xenial", "stretch", "bionic", "buster", "focal", "bullseye", "jammy", "bookworm", "noble", "trixie"))
+      .to eq([9, 10, 11, 12, 12, 13, 13, 13, 13, 13])
     own = Relspec::ReleaseSpec::Distributions.with_overrides("focal" => { "debhelper_compat" => 11 })
     expect(own.fetch("focal").debhelper_compat).to eq(11)
   end

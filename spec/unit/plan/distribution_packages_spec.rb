@@ -3,6 +3,7 @@
 require_relative "../unit_helper"
 require "relspec/apt/package_index"
 require "relspec/plan/target"
+require "digest"
 require "relspec/plan/distribution_packages"
 
 # What planning keeps of a distribution's archive, fed a small index in
@@ -25,17 +26,23 @@ RSpec.describe Relspec::Plan::DistributionPackages do
       Provides: ruby-minitest (= 5.15.0)
     INDEX
   end
-  let(:repository) do
-    Struct.new(:index) do
-      def index_digest(*, **)
-        "0" * 64
+  # +indices+: arch => PackageIndex, the architectures apt reads in order.
+  def reader(indices)
+    Struct.new(:indices) do
+      def index_architectures(_codename, _arch, **)
+        indices.keys
       end
 
-      def packages(*, **)
-        index
+      def index_digest(_codename, arch, **)
+        Digest::SHA256.hexdigest(arch)
       end
-    end.new(index)
+
+      def packages(_codename, arch, **)
+        indices.fetch(arch)
+      end
+    end.new(indices)
   end
+  let(:repository) { reader("amd64" => index) }
   let(:archive) { Struct.new(:read_components).new(["main"]) }
 
   it "keeps every version of a name, the package's and those provided, newest first" do
@@ -46,5 +53,14 @@ RSpec.describe Relspec::Plan::DistributionPackages do
     expect(packages.version_of("ruby-minitest", target)).to eq("5.17.0-1")
     expect(packages.versions_of("ruby-minitest", target)).to eq(%w[5.17.0-1 5.15.0])
     expect(packages.versions_of("ruby-none", target)).to eq([])
+  end
+
+  it "reads binary-all too where apt reads one: a ruby-<gem> is Architecture: all" do
+    all = Relspec::Apt::PackageIndex.parse("Package: ruby-facets\nVersion: 3.1.0-3\n")
+    found = described_class.send(:versions, reader("amd64" => index, "all" => all), archive, target,
+                                 %w[ruby-facets ruby-minitest], Relspec::Apt::Cache.new(nil))
+    expect(found).to eq("ruby-facets" => ["3.1.0-3"], "ruby-minitest" => %w[5.17.0-1 5.15.0])
+    expect(described_class.send(:versions, repository, archive, target, %w[ruby-facets], Relspec::Apt::Cache.new(nil)))
+      .to eq({})
   end
 end

@@ -102,7 +102,7 @@ module Relspec
           %w[type labels].reject { |key| definition.key?(key) }.map do |key|
             Diagnostic.error("missing-key", "missing required key \"#{key}\" (#{codename} is not a built-in distribution)",
                              location: file.location(["distributions", codename]),
-                             hint: key == "type" ? "type is ubuntu or debian" : "labels are the names autoproj knows it by, e.g. [13, trixie, default]")
+                             hint: key == "type" ? "type is ubuntu or debian" : "labels are the names autoproj knows it by, e.g. [15, duke, default]")
           end
         end
 

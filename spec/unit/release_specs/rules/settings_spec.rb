@@ -46,9 +46,9 @@ RSpec.describe Relspec::ReleaseSpec::Rules::Settings do
   end
 
   it "asks a distribution relspec does not know for its type and labels" do
-    expect(check("distributions:\n  trixie: { archive: { host: true } }\n")).to eq([
-      'error missing-key@3: missing required key "labels" (trixie is not a built-in distribution)',
-      'error missing-key@3: missing required key "type" (trixie is not a built-in distribution)'
+    expect(check("distributions:\n  duke: { archive: { host: true } }\n")).to eq([
+      'error missing-key@3: missing required key "labels" (duke is not a built-in distribution)',
+      'error missing-key@3: missing required key "type" (duke is not a built-in distribution)'
     ])
   end
 
