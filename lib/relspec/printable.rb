@@ -20,5 +20,11 @@ module Relspec
 
       string.gsub(UNSAFE) { |char| SHORT.fetch(char) { format("\\u%04X", char.ord) } }
     end
+
+    # Text of several lines (a tool's output, a message with a hint) with
+    # its own line breaks kept and everything else escaped as +text+ does.
+    def lines(value)
+      value.to_s.split("\n", -1).map { |line| text(line) }.join("\n")
+    end
   end
 end

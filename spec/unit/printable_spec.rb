@@ -14,4 +14,9 @@ RSpec.describe Relspec::Printable do
     expect(described_class.text("plain")).to eq("plain")
     expect(described_class.text(nil)).to eq("")
   end
+
+  it "keeps the line breaks of text of several lines and escapes the rest of each line" do
+    expect(described_class.lines("reprepro failed:\n\e[2Jcannot\tread\n")).to eq("reprepro failed:\n\\e[2Jcannot\\tread\n")
+    expect(described_class.lines("already\\e escaped")).to eq("already\\e escaped")
+  end
 end
