@@ -2,6 +2,7 @@
 
 require "fileutils"
 require_relative "../error"
+require_relative "../lock_holder"
 
 module Relspec
   module Publish
@@ -16,13 +17,13 @@ module Relspec
 
       module_function
 
-      # Yields once the lock is held; +waiting+ is called once (with what
-      # holds it) if another publisher holds it.
+      # Yields once the lock is held; +waiting+ is called once (with who
+      # holds it and since when, LockHolder) if another publisher holds it.
       def hold(repository, waiting: nil)
         file = open_lock_file(repository)
         begin
           unless file.flock(File::LOCK_EX | File::LOCK_NB)
-            waiting&.call("another relspec publish")
+            waiting&.call(LockHolder.of(file))
             file.flock(File::LOCK_EX)
           end
           yield
@@ -32,6 +33,10 @@ module Relspec
       end
 
       def open_lock_file(repository)
+        if File.exist?(repository) && !File.directory?(repository)
+          raise PublishError, "cannot lock the repository #{repository}: it is not a folder"
+        end
+
         FileUtils.mkdir_p(repository)
         File.open(File.join(repository, FILE_NAME), File::RDWR | File::CREAT, 0o644)
       rescue SystemCallError => e
