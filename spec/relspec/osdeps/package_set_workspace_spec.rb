@@ -298,8 +298,9 @@ RSpec.describe "an autoproj workspace using relspec's package set" do
     File.write(config, YAML.dump(YAML.safe_load(saved).except("operating_system")))
     output, status = autoproj("show", "base/types", env: { "AUTOPROJ_OS" => "debian:11,bullseye" })
     expect(status.success?).to be(false)
-    expect(output).to include("relspec package set: the release demo-base does not exist for debian 11,bullseye (amd64) " \
-                              "(it is built for debian 12,bookworm)")
+    # issue 46, case 16: the user chose demo-child; demo-base is the ancestor lacking the system
+    expect(output).to include("relspec package set: the release demo-child does not exist for debian 11,bullseye (amd64): " \
+                              "its ancestor demo-base is not built for it (demo-base is built for debian 12,bookworm)")
   ensure
     File.write(config, saved) if saved
   end
