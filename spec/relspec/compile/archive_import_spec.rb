@@ -26,22 +26,26 @@ RSpec.describe "archive imports" do
     # bad input: an archive the server does not have, and a package set
     # patch that names a file outside the package
     builder.autobuild("import_package 'external/tarball'\nimport_package 'external/missing'\n" \
-                      "import_package 'external/escape'\n")
+                      "import_package 'external/escape'\nimport_package 'external/level'\n")
     root = builder.create
     File.write(File.join(root, "autoproj", "evil.patch"), "--- ../../etc/passwd\n+++ ../../etc/passwd\n@@ -1 +1 @@\n-a\n+b\n")
+    # made by `diff -ru a/ b/`, given at autobuild's default level 0 (issue 46, case 16)
+    File.write(File.join(root, "autoproj", "level.patch"),
+               "--- a/CMakeLists.txt\n+++ b/CMakeLists.txt\n@@ -1 +1 @@\n-project(tarball)\n+project(patched)\n")
     File.write(File.join(root, "autoproj", "overrides.yml"), <<~YAML)
       overrides:
         - external/tarball: { type: archive, url: "#{@server.url}/tarball-1.2.tar.gz" }
         - external/missing: { type: archive, url: "#{@server.url}/missing-1.0.tar.gz" }
         - external/escape: { type: archive, url: "#{@server.url}/tarball-1.2.tar.gz", patches: [$AUTOPROJ_ROOT/autoproj/evil.patch] }
+        - external/level: { type: archive, url: "#{@server.url}/tarball-1.2.tar.gz", patches: [$AUTOPROJ_ROOT/autoproj/level.patch] }
     YAML
     # what autoproj's import left: the archive unpacked in the source folder
-    %w[tarball missing escape].each do |name|
+    %w[tarball missing escape level].each do |name|
       FileUtils.mkdir_p(File.join(root, "src", "external", name))
       File.write(File.join(root, "src", "external", name, "CMakeLists.txt"), "project(#{name})\n")
     end
     FileUtils.mkdir_p(File.join(@base, "specs"))
-    { "r" => "tarball", "missing" => "missing", "escape" => "escape" }.each do |spec, name|
+    { "r" => "tarball", "missing" => "missing", "escape" => "escape", "level" => "level" }.each do |spec, name|
       File.write(File.join(@base, "specs", "#{spec}.yml"), <<~YAML)
         release: #{spec}
         maintainer: Rock Packaging <rock@example.org>
@@ -100,5 +104,19 @@ RSpec.describe "archive imports" do
                                   "the package's folder")
     expect(run.stderr).not_to match(/backtrace|\.rb:\d/)
     expect(Dir[File.join(@base, "escape", "**", "*.dsc")]).to eq([])
+  end
+
+  # Issue 46, case 16: dpkg-source stopped at "can't find file to patch",
+  # after the .orig and debian/ were made.
+  it "refuses a package set patch whose file the package does not have at its level, naming patch, file and level" do
+    run = relspec("compile", "specs/level.yml", "--out", "level", chdir: @base)
+    expect([run.exit_code, run.stdout]).to eq([1, ""])
+    expect(run.stderr.lines.grep_v(/WARN: .* does not have a manifest/).join).to eq(
+      "autoproj/level.patch: error[package-set-patch]: package set patch autoproj/level.patch changes a/CMakeLists.txt " \
+      "or b/CMakeLists.txt, which the package's source does not have at level 0 (patch -p0)\n  " \
+      "hint: fix the patch's file names, or its level in the package set (`patches: [[file, level]]`; autobuild's " \
+      "default level is 0, a patch made by `diff -ru a/ b/` needs 1)\n1 error in 1 file\n"
+    )
+    expect(Dir[File.join(@base, "level", "**", "*.{dsc,orig.tar.gz}")]).to eq([])
   end
 end
