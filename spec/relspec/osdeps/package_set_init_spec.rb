@@ -17,7 +17,8 @@ require_relative "../../support/machine_apt"
 # workspace's environment. The well-formed set is the control: it goes on
 # to write its apt source and run apt-get update (which fails: nothing
 # serves 127.0.0.1:1). Root, as CI: the installed env.yml files the
-# environment cases need live below /opt/rock; MachineApt puts /etc/apt back.
+# environment cases need live below /opt/rock; MachineApt puts /etc/apt back
+# as it found it.
 RSpec.describe "the package set's init.rb on hostile data" do
   RELEASE = "zz-relspec-init-test"
   PREFIX = File.join("/opt/rock", RELEASE)
