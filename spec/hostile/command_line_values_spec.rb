@@ -41,4 +41,29 @@ RSpec.describe "relspec with control characters in its command-line values", :tm
     run = relspec("report", "specs/demo-base.yml", "--out", File.join(@dir, "x#{esc}"))
     expect([run.exit_code, run.stdout]).to eq([0, "wrote #{@dir}/x\\e[31m/demo-base/report/index.html\n"])
   end
+
+  # A value with a newline in a message of several lines (a path repeated
+  # in a diagnostic, a ref) would still have forged a line: such values are
+  # refused as names or printed whole, on one line.
+  it "keeps every other command-line value on its line: osdeps select, osdeps index and diff --base" do
+    forged = "v\nrelspec: forged#{esc}"
+    shown = "v\\nrelspec: forged\\e[31m"
+    select = %w[osdeps select --release demo-base --arch amd64 --os debian:12,bookworm --data] + [File.join(CliRunner::ROOT, "releases")]
+    runs = {
+      "--release \"#{shown}\" is not a release name" => select.map { |arg| arg == "demo-base" ? forged : arg },
+      "--arch \"#{shown}\" is not a Debian architecture name" => select.map { |arg| arg == "amd64" ? forged : arg },
+      "--os \"v\\nrelspec:\\e[31m\" holds control characters" =>
+        select.map { |arg| arg == "debian:12,bookworm" ? "v\nrelspec:#{esc}" : arg },
+      "#{shown}/ holds no release spec" => ["osdeps", "index", "--specs", forged],
+      "#{shown} is not a commit of the git repository at ." => ["diff", "--base", forged]
+    }
+    runs.each do |message, args|
+      run = relspec(*args, chdir: args.first == "diff" ? CliRunner::ROOT : @dir)
+      expect([run.exit_code, run.stderr]).to eq([1, "relspec: error: #{message}\n"]), args.inspect
+    end
+    missing = relspec(*select.take(8), "--data", File.join(@dir, forged), chdir: @dir)
+    expect([missing.exit_code, missing.stderr.lines.size]).to eq([1, 2]), missing.stderr
+    expect(missing.stderr).to include("no osdeps file #{@dir}/#{shown}/demo-base/osdeps/demo-base-amd64.yml\n")
+    expect(Dir.children(@dir)).to eq([])
+  end
 end
