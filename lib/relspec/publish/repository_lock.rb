@@ -33,12 +33,10 @@ module Relspec
       end
 
       def open_lock_file(repository)
-        if File.exist?(repository) && !File.directory?(repository)
-          raise PublishError, "cannot lock the repository #{repository}: it is not a folder"
-        end
-
         FileUtils.mkdir_p(repository)
         File.open(File.join(repository, FILE_NAME), File::RDWR | File::CREAT, 0o644)
+      rescue Errno::EEXIST, Errno::ENOTDIR # mkdir_p's "File exists" where a file is in the way
+        raise PublishError, "cannot lock the repository #{repository}: it, or a folder above it, is a file, not a folder"
       rescue SystemCallError => e
         raise PublishError, "cannot lock the repository #{repository}: #{e.message.sub(/ @ .*/, '')}"
       end

@@ -26,9 +26,12 @@ RSpec.describe Relspec::Publish::RepositoryLock do
     expect(waiter.value).to eq(:held)
   end
 
-  it "refuses a repository path that is no folder, saying so" do
+  it "refuses a repository path that is a file, or below one, saying so (not mkdir's 'File exists')" do
     File.write(@repository, "")
-    expect { described_class.hold(@repository) { nil } }
-      .to raise_error(Relspec::PublishError, "cannot lock the repository #{@repository}: it is not a folder")
+    [@repository, File.join(@repository, "sub")].each do |path|
+      expect { described_class.hold(path) { nil } }
+        .to raise_error(Relspec::PublishError, "cannot lock the repository #{path}: it, or a folder above it, is a file, " \
+                                               "not a folder")
+    end
   end
 end
