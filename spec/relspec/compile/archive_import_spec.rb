@@ -115,15 +115,22 @@ RSpec.describe "archive imports" do
   # entry was deleted.
   it "keeps an archive import's version rising when the archive's time moves back, and warns" do
     lock = File.join(@base, "releases", "back", "lock.yml")
+    cache = nil
     plan = lambda do |time|
       File.utime(time, time, @back)
-      run = relspec("plan", "specs/back.yml", "--write", chdir: @base, env: { "XDG_CACHE_HOME" => Dir.mktmpdir("cache", @base) })
+      cache = Dir.mktmpdir("cache", @base)
+      run = relspec("plan", "specs/back.yml", "--write", chdir: @base, env: { "XDG_CACHE_HOME" => cache })
       expect(run.exit_code).to eq(0), run.stderr
       [YAML.safe_load_file(lock).dig("targets", "bookworm/amd64", "external/back", "version"), run.stdout]
     end
     first, = plan.call(Time.utc(2099, 1, 1))
     back, said = plan.call(Time.utc(2021, 1, 1))
     again, = plan.call(Time.utc(2021, 1, 1))
+    # dpkg-source takes the raised version
+    compile = relspec("compile", "specs/back.yml", "--out", "back", chdir: @base, env: { "XDG_CACHE_HOME" => cache })
+    expect(compile.exit_code).to eq(0), compile.stderr
+    expect(Dir[File.join(@base, "back", "**", "*.dsc")].map { |path| File.basename(path) })
+      .to eq(["rock-back-external-back_0.20990101.000000+really0.20210101.000000-1~bookworm.dsc"])
     later, quiet = plan.call(Time.utc(2100, 1, 1))
     expect([first, back, again, later]).to eq(%w[0.20990101.000000-1~bookworm 0.20990101.000000+really0.20210101.000000-1~bookworm
                                                  0.20990101.000000+really0.20210101.000000-1~bookworm 0.21000101.000000-1~bookworm])
