@@ -23,6 +23,10 @@ RSpec.describe Relspec::CLI::FriendlyErrors do
     stderr.truncate(0)
     stderr.rewind
     expect(run { raise Errno::ENOENT, "/tmp/a\e[31m" }).to eq([1, "relspec: error: No such file or directory - /tmp/a\\e[31m\n"])
+    stderr.truncate(0)
+    stderr.rewind
+    # a file name that is not UTF-8 in a message of several lines: still a user error
+    expect(run { raise Relspec::ToolError, "tar failed:\ncaf\xE9" }).to eq([1, "relspec: error: tar failed:\ncaf\\xE9\n"])
   end
 
   it "prints diagnostics with their summary, and a bug as one line asking for --debug" do
