@@ -66,4 +66,13 @@ RSpec.describe "relspec with control characters in its command-line values", :tm
     expect(missing.stderr).to include("no osdeps file #{@dir}/#{shown}/demo-base/osdeps/demo-base-amd64.yml\n")
     expect(Dir.children(@dir)).to eq([])
   end
+
+  it "escapes the lock's path that plan --write names, below a spec folder the command line named" do
+    # made at a plain path (autoproj reads it there), then renamed
+    ReleaseFixture.new(File.join(@dir, "proj"))
+                  .spec("h", "select: [base/cmake]\ntargets: { bionic: [amd64] }\nmaintainer: Demo <demo@example.org>\n")
+    File.rename(File.join(@dir, "proj"), File.join(@dir, "proj#{esc}"))
+    run = relspec("plan", "proj#{esc}/specs/h.yml", "--write", chdir: @dir)
+    expect([run.exit_code, run.stderr.lines.last]).to eq([0, "wrote proj\\e[31m/releases/h/lock.yml\n"]), run.stderr
+  end
 end

@@ -32,7 +32,8 @@ module Relspec
         else
           result.written.each { |dir| @io.puts("wrote #{Printable.text(dir)}") } # --out is the command line's
           @io.puts("#{result.release}: #{result.written.size} source packages written, #{result.unchanged.size} unchanged, " \
-                   "#{result.published.size} already published; #{result.lock_changed ? 'wrote' : 'kept'} #{result.lock_path}")
+                   "#{result.published.size} already published; #{result.lock_changed ? 'wrote' : 'kept'} " \
+                   "#{Printable.text(result.lock_path)}")
           note_unchecked(result.unchecked)
         end
         0

@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require_relative "../publish"
+require_relative "../printable"
 
 module Relspec
   module CLI
@@ -18,16 +19,16 @@ module Relspec
 
       def call
         result = Publish.run(@path, out: @out, target: @target, timeout: @timeout,
-                                    waiting: ->(what) { @err.puts("waiting for #{what} to finish…") })
+                                    waiting: ->(what) { @err.puts("waiting for #{Printable.text(what)} to finish…") })
         if result.stale_lock
           @err.puts("removed reprepro's stale lock #{result.stale_lock} (no reprepro uses the repository: " \
                     "one was killed before it could remove it)")
         end
         note_recovered(result)
         result.targets.each { |target| report(target) }
-        @io.puts("#{result.release}: #{result.repository}: #{result.osdeps_written.zero? ? 'osdeps unchanged' : "wrote #{result.osdeps_written} osdeps files"}")
+        @io.puts("#{result.release}: #{Printable.text(result.repository)}: #{result.osdeps_written.zero? ? 'osdeps unchanged' : "wrote #{result.osdeps_written} osdeps files"}")
         note_missing(result.osdeps_missing)
-        @io.puts("status page: #{result.report}")
+        @io.puts("status page: #{Printable.text(result.report)}")
         0
       end
 
