@@ -119,10 +119,25 @@ module Relspec
     def self.settle(plan, facts)
       inputs = DebianInputs.new(effective: facts.resolution.effective, ancestors: facts.ancestors,
                                 release_catalog: facts.release_catalog)
-      versioning = Versioning.new(history: facts.previous&.history || History.empty, own: facts.own)
-      targets, work = Settlement.new(catalog: facts.release_catalog.catalog, inputs: inputs, versioning: versioning,
-                                     overlays: facts.overlays).call(plan.targets)
-      [plan.with_targets(targets), work]
+      history = facts.previous&.history || History.empty
+      versioning = Versioning.new(history: history, own: facts.own)
+      rising = RisingUpstream.new(history: history, own: facts.own)
+      targets, work, raised = Settlement.new(catalog: facts.release_catalog.catalog, inputs: inputs, versioning: versioning,
+                                             overlays: facts.overlays, rising: rising).call(plan.targets)
+      [plan.with_targets(targets, warnings: raised_warnings(raised, facts.resolution.spec_file)), work]
+    end
+
+    # One warning per archive import whose version was raised (RisingUpstream),
+    # listing the targets.
+    def self.raised_warnings(raised, spec_file)
+      raised.group_by { |one| [one.package, one.archive, one.above, one.upstream] }.sort.map do |(package, archive, above, upstream), all|
+        targets = all.map { |one| one.target.to_s }.uniq.sort.join(", ")
+        Diagnostic.warning("archive-time-back",
+                           "#{package}: its archive's time gives #{archive}, below #{above}, which the release already " \
+                           "gave it (#{targets}); versioned #{upstream}, so that apt takes it as an upgrade",
+                           location: spec_file.location(["workspace"]),
+                           hint: "an older archive is served again: check the package set's url, or leave it so")
+      end
     end
 
     # The gem versions the lock recorded (from the .gem's URL: the lock's

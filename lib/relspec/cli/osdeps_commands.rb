@@ -109,7 +109,7 @@ module Relspec
 
       def spec_library
         library = ReleaseSpec::Library.new(options[:specs])
-        raise Error, "#{options[:specs]}/ holds no release spec" if library.names.empty?
+        raise InvalidOption, "#{options[:specs]}/ holds no release spec" if library.names.empty?
 
         library
       end

@@ -2,6 +2,7 @@
 
 require "fileutils"
 require_relative "../error"
+require_relative "../lock_holder"
 
 module Relspec
   module Publish
@@ -16,13 +17,13 @@ module Relspec
 
       module_function
 
-      # Yields once the lock is held; +waiting+ is called once (with what
-      # holds it) if another publisher holds it.
+      # Yields once the lock is held; +waiting+ is called once (with who
+      # holds it and since when, LockHolder) if another publisher holds it.
       def hold(repository, waiting: nil)
         file = open_lock_file(repository)
         begin
           unless file.flock(File::LOCK_EX | File::LOCK_NB)
-            waiting&.call("another relspec publish")
+            waiting&.call(LockHolder.of(file))
             file.flock(File::LOCK_EX)
           end
           yield
@@ -34,6 +35,8 @@ module Relspec
       def open_lock_file(repository)
         FileUtils.mkdir_p(repository)
         File.open(File.join(repository, FILE_NAME), File::RDWR | File::CREAT, 0o644)
+      rescue Errno::EEXIST, Errno::ENOTDIR # mkdir_p's "File exists" where a file is in the way
+        raise PublishError, "cannot lock the repository #{repository}: it, or a folder above it, is a file, not a folder"
       rescue SystemCallError => e
         raise PublishError, "cannot lock the repository #{repository}: #{e.message.sub(/ @ .*/, '')}"
       end
