@@ -52,7 +52,7 @@ module Relspec
 
     def run
       cache_writer = CacheWriter.new # one note for every cache the run cannot write
-      @planned = Plan.compute(@path, timeout: @timeout, cache_writer: cache_writer, discard_lock: @discard_lock)
+      @planned = Plan.run(@path, timeout: @timeout, cache_writer: cache_writer, discard_lock: @discard_lock)
       @on_planned&.call(@planned)
       @effective = @planned.effective
       @tree = OutputTree.new(@out, @effective.release)
