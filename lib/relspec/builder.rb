@@ -84,8 +84,8 @@ module Relspec
           plan = BuildPlan.read(dir)
           TargetLock.hold(dir, "build") do
             refuse_links(dir, plan)
-            FileUtils.mkdir_p(File.join(dir, "logs"))
-            prepare_log = UnlinkedPath.check(dir, "logs/prepare.log")
+            FileUtils.mkdir_p(File.join(dir, OutputTree::LOGS_DIR))
+            prepare_log = UnlinkedPath.check(dir, OutputTree::PREPARE_LOG)
             # on a cluster the chroot-prepare job of the target makes it, on a node
             prepared = slurm? && !@prepare_only ? false : backend.prepare(target, log: prepare_log)
             next TargetReport.new(target: target, dir: dir, outcomes: [], reused: 0, prepared: prepared) if @prepare_only
@@ -115,8 +115,8 @@ module Relspec
       def refuse_links(dir, plan)
         %w[results logs logs/prepare.log].each { |relative| UnlinkedPath.check(dir, relative) }
         plan.entries.each do |entry|
-          UnlinkedPath.check(dir, "results/#{entry.source}")
-          UnlinkedPath.check(dir, "logs/#{entry.source}.log")
+          UnlinkedPath.check(dir, OutputTree.results_name(entry.source))
+          UnlinkedPath.check(dir, OutputTree.log_name(entry.source))
         end
       end
 
@@ -191,7 +191,7 @@ module Relspec
 
       # +output_dir+: where the build puts its files (StagedResults#staging).
       def request_for(plan, entry, target, repositories, debs, dir, output_dir)
-        log = UnlinkedPath.check(dir, "logs/#{entry.source}.log")
+        log = UnlinkedPath.check(dir, OutputTree.log_name(entry.source))
         File.write(log, "")
         Request.new(source: entry.source, version: entry.version, dsc: File.expand_path(plan.dsc_path(entry)),
                     target: target, repositories: repositories, local_debs: debs, output_dir: output_dir, log: log)
@@ -204,7 +204,7 @@ module Relspec
         results.record(BuildResults::Record.new(
                          source: entry.source, package: entry.package, version: entry.version, dsc_sha256: dsc_sha256,
                          status: outcome.status.to_s,
-                         duration: started ? outcome.duration : nil, log: started ? "logs/#{entry.source}.log" : nil,
+                         duration: started ? outcome.duration : nil, log: started ? OutputTree.log_name(entry.source) : nil,
                          reason: outcome.reason&.gsub("#{dir}/", ""), files: files.freeze
                        ))
       end

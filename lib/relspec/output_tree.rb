@@ -9,6 +9,25 @@ module Relspec
   class OutputTree
     PLAN_FILE = "plan.yml"
     RESULTS_FILE = "build-results.yml"
+    LOGS_DIR = "logs"
+    RESULTS_DIR = "results"
+    # The log of preparing a target's chroot, relative to its folder.
+    PREPARE_LOG = "#{LOGS_DIR}/prepare.log".freeze
+
+    # Relative to a target folder (what build-results.yml records and the
+    # builder checks for links): a source's build log, its results folder and
+    # the folder a build stages them in until it succeeds.
+    def self.log_name(source)
+      "#{LOGS_DIR}/#{source}.log"
+    end
+
+    def self.results_name(source)
+      "#{RESULTS_DIR}/#{source}"
+    end
+
+    def self.staging_name(source)
+      "#{RESULTS_DIR}/.#{source}.partial"
+    end
 
     attr_reader :out, :release
 
@@ -50,7 +69,7 @@ module Relspec
     end
 
     def logs_dir(target)
-      File.join(target_dir(target), "logs")
+      File.join(target_dir(target), LOGS_DIR)
     end
   end
 end

@@ -3,6 +3,7 @@
 require_relative "../atomic_file"
 require_relative "../display_path"
 require_relative "../error"
+require_relative "../output_tree"
 require_relative "../apt/version"
 require_relative "../yaml/field_reader"
 require_relative "../yaml/located_document"
@@ -19,7 +20,7 @@ module Relspec
     # checked, build-dependencies only on sources listed before; a damaged
     # file is an InvalidInput naming file:line.
     class BuildPlan
-      FILE = "plan.yml"
+      FILE = OutputTree::PLAN_FILE
       ROOT_KEYS = %w[release target builds].freeze
       BUILD_KEYS = %w[package source version dsc build_depends].freeze
       # Source names become folder names (results/<source>, logs/<source>.log).

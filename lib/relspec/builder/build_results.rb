@@ -9,6 +9,7 @@ require_relative "../yaml/field_reader"
 require_relative "../apt/version"
 require_relative "../diagnostic"
 require_relative "../error"
+require_relative "../output_tree"
 
 module Relspec
   module Builder
@@ -21,7 +22,7 @@ module Relspec
     # never "nothing built" and never a crash: publishing from a guess could
     # put the wrong bytes into a repository, where they stay forever.
     class BuildResults
-      FILE_NAME = "build-results.yml"
+      FILE_NAME = OutputTree::RESULTS_FILE
       FORMAT_KEY = "relspec_build_results"
       FORMAT_VERSION = 1
       ROOT_KEYS = [FORMAT_KEY, "release", "target", "backend", "packages"].freeze

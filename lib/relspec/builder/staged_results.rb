@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require "fileutils"
+require_relative "../output_tree"
 require_relative "unlinked_path"
 
 module Relspec
@@ -17,8 +18,8 @@ module Relspec
 
       # +dir+: the target's folder; +source+: the source package.
       def initialize(dir, source)
-        @final = UnlinkedPath.check(dir, "results/#{source}")
-        @staging = UnlinkedPath.check(dir, "results/.#{source}.partial")
+        @final = UnlinkedPath.check(dir, OutputTree.results_name(source))
+        @staging = UnlinkedPath.check(dir, OutputTree.staging_name(source))
       end
 
       # An empty staging folder (what an interrupted run left is removed).

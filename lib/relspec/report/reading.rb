@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require_relative "page"
+require_relative "folder"
 require_relative "first_error"
 require_relative "critical_path"
 require_relative "../unlinked_path"
@@ -64,7 +65,7 @@ module Relspec
       def cell(input, package, entry, planned, record, blocked, logs)
         source = record&.source || planned&.source
         log = record&.log && UnlinkedPath.check(input.dir, record.log, why: LINKED_LOG % input.dir)
-        link = log && File.file?(log) ? "logs/#{input.target.dir_name}/#{File.basename(log)}" : nil
+        link = log && File.file?(log) ? "#{Folder::LOGS}/#{input.target.dir_name}/#{File.basename(log)}" : nil
         logs[link] = log if link
         failed = record&.status == "failed"
         Cell.new(package: package, source: source, decision: entry.decision, from: entry.from, version: entry.version,

@@ -1,5 +1,6 @@
 # frozen_string_literal: true
 
+require_relative "../../output_tree"
 require "digest"
 require "open3"
 
@@ -51,7 +52,7 @@ module Relspec
         def problem(source, version)
           return "the job's result lists no file" if @files.empty?
 
-          folder = "results/#{source}/"
+          folder = "#{OutputTree.results_name(source)}/"
           @files.each do |file|
             name = file["name"].to_s
             reason = placement(name, folder) || bytes(name, file) || ownership(name, source, version)

@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require "digest"
+require_relative "../../output_tree"
 require_relative "../build_plan"
 
 module Relspec
@@ -34,9 +35,9 @@ module Relspec
 
         def result_path(source) = File.join(@jobs_dir, "#{source}.result")
 
-        def log_path(source) = File.join(@dir, "logs", "#{source}.log")
+        def log_path(source) = File.join(@dir, OutputTree.log_name(source))
 
-        def prepare_log = File.join(@dir, "logs", "prepare.log")
+        def prepare_log = File.join(@dir, OutputTree::PREPARE_LOG)
 
         # On the node, outside the shared filesystem.
         def work_dir(source)

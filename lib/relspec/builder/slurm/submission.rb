@@ -1,5 +1,6 @@
 # frozen_string_literal: true
 
+require_relative "../../output_tree"
 require_relative "../../atomic_file"
 require_relative "../../error"
 require_relative "../request"
@@ -68,7 +69,7 @@ module Relspec
           staged = StagedResults.new(dir, entry.source)
           request = Request.new(source: entry.source, version: entry.version, dsc: File.expand_path(@plan.dsc_path(entry)),
                                 target: @target, repositories: repositories,
-                                local_debs: done_debs + ancestors.map { |source| File.join(dir, "results", source) },
+                                local_debs: done_debs + ancestors.map { |source| File.join(dir, OutputTree.results_name(source)) },
                                 output_dir: staged.final, log: @run.log_path(entry.source))
           work = @run.work_dir(entry.source)
           path = File.join(@run.jobs_dir, "#{entry.source}.sh")
@@ -77,7 +78,7 @@ module Relspec
                                     steps: @backend.job_steps(request, work), work: work,
                                     result: @run.result_path(entry.source), output_dir: request.output_dir,
                                     staging: staged.staging,
-                                    prefix: "results/#{entry.source}")
+                                    prefix: OutputTree.results_name(entry.source))
           AtomicFile.write(path, script)
           # afterok on every build of the run the job's backend installs
           # (the closure), not only the direct build-dependencies
