@@ -69,6 +69,25 @@ RSpec.describe "relspec build --backend sbuild", order: :defined do
     expect(two).to match(/Unpacking ruby-dev:amd64 /)
     expect(two).to match(/Found Ruby: .*ruby/)
 
+    # The chroot is unpacked once (base/one's log has it), and each build
+    # runs on a layer of its own over it: base/two installed pkg-config
+    # again (above), so base/one's did not reach it.
+    one = File.read(File.join(@release.target_dir, "logs", "#{@release.source('base/one')}.log"))
+    if Process.uid.zero?
+      expect(one).to include("$ unshare --user --map-users=")
+      expect(two).not_to include("$ unshare --user --map-users=")
+      expect(two).to match(/^\$ unshare --mount --propagation private -- .* sbuild .*--chroot=\S+empty\.tar /)
+      expect(two).not_to include("bookworm-amd64.tar.zst")
+
+      # The .debs base/one downloaded (cmake) are kept for the target and
+      # base/two takes them from there.
+      cmake = %r{^Get:\d+ http\S+ bookworm/main amd64 cmake amd64 }
+      expect(one).to match(cmake)
+      expect(two).to match(/^(Unpacking|Preparing to unpack) .*cmake_/)
+      expect(two).not_to match(cmake)
+      expect(Dir.children(File.join(CliRunner::APT_CACHE, "bookworm-amd64"))).to include(a_string_matching(/\Acmake_.*\.deb\z/))
+    end
+
     # ccache: on the build's PATH, its folder bound in; base/one's compile
     # missed, base/two's hit. The folder belongs to the chroot's build user
     # (root's first subordinate uid) and nobody else.
