@@ -83,13 +83,13 @@ module Relspec
       # link and keep its .debs (#prepare first).
       def config_lines(target)
         kept = target_folder(target)
-        ["push @{$unshare_bind_mounts}, { directory => #{perl(kept)}, mountpoint => #{perl(MOUNTPOINT)} };",
+        ["push @{$unshare_bind_mounts}, { directory => #{BuildUserFolder.perl(kept)}, mountpoint => #{BuildUserFolder.perl(MOUNTPOINT)} };",
          # sbuild has apt delete what it installed by default
          "$apt_keep_downloaded_packages = 1;",
          # a string: sbuild runs an external command as `sh -c` of its words
          # joined, so it is one script either way
-         "push @{$external_commands->{'chroot-setup-commands'}}, #{perl(AptCache.link_script)};",
-         "push @{$external_commands->{'starting-build-commands'}}, #{perl(AptCache.keep_script)};"]
+         "push @{$external_commands->{'chroot-setup-commands'}}, #{BuildUserFolder.perl(AptCache.link_script)};",
+         "push @{$external_commands->{'starting-build-commands'}}, #{BuildUserFolder.perl(AptCache.keep_script)};"]
       end
 
       private
@@ -107,10 +107,6 @@ module Relspec
           end
         end
         path
-      end
-
-      def perl(text)
-        BuildUserFolder.perl(text)
       end
     end
   end

@@ -18,14 +18,10 @@ module Relspec
     # made before has apt install it in each build instead, which is why
     # relspec need not tell the two tarballs apart.
     #
-    # Who writes it: sbuild's unshare mode maps the chroot's users to this
-    # user's subordinate ids (/etc/subuid), and runs a build of root's as
-    # the chroot's root, i.e. as the first subordinate uid. The folder is
-    # owned by that uid and gid and closed to everybody else (0700): never
-    # world-writable, because whoever writes a compile cache chooses the
-    # objects of every later build. Only root can give a folder to a
-    # subordinate uid, so ccache is used when relspec runs as root; a
-    # normal user's builds go without it.
+    # Who writes it: the chroot's build user only (BuildUserFolder, 0700):
+    # whoever writes a compile cache chooses the objects of every later
+    # build. So ccache is used when relspec runs as root; a normal user's
+    # builds go without it.
     class Ccache
       # where relspec run by root keeps it (root's home is closed to the
       # chroot's users)
@@ -73,20 +69,14 @@ module Relspec
       # first). Pushed onto the bind mounts: AptCache binds its folder too.
       def config_lines
         prepare
-        ["push @{$unshare_bind_mounts}, { directory => #{perl(dir)}, mountpoint => #{perl(MOUNTPOINT)} };",
+        ["push @{$unshare_bind_mounts}, { directory => #{BuildUserFolder.perl(dir)}, mountpoint => #{BuildUserFolder.perl(MOUNTPOINT)} };",
          # BASEDIR: the compiler's paths below /build (a build's folder,
          # /build/<source>-<random>/<source>-<version>) hashed relative, so
          # that another build folder finds the same objects
-         "$build_environment = { 'CCACHE_DIR' => #{perl(MOUNTPOINT)}, 'CCACHE_BASEDIR' => '/build', " \
-         "'CCACHE_MAXSIZE' => #{perl(MAX_SIZE)} };",
-         "$path = #{perl(PATH)};",
+         "$build_environment = { 'CCACHE_DIR' => #{BuildUserFolder.perl(MOUNTPOINT)}, 'CCACHE_BASEDIR' => '/build', " \
+         "'CCACHE_MAXSIZE' => #{BuildUserFolder.perl(MAX_SIZE)} };",
+         "$path = #{BuildUserFolder.perl(PATH)};",
          "$manual_depends = ['ccache'];"]
-      end
-
-      private
-
-      def perl(text)
-        BuildUserFolder.perl(text)
       end
     end
   end
