@@ -9,13 +9,12 @@
 #    RELSPEC_APT_CACHE=off: the tarball unpacked in every build, every
 #    build-dependency downloaded) and the new way (the chroot unpacked once
 #    per run, a throw-away overlay layer per build, downloads kept per
-#    target). Each package's recorded duration and the sbuild/host ratio:
-#    the second package of the new way is what every further package of a
-#    release pays (the first one also pays the unpacking).
+#    target), alternating BENCH_ROUNDS times (default 2): each package's
+#    recorded duration and the sbuild/host ratio.
 # 2. sbuild alone, each line of its output timestamped, its phases (its
 #    section banners): the old command line as the backend ran it, then the
-#    same build on a layer over the chroot unpacked once (ChrootLayers), as
-#    the backend runs it now.
+#    same build on a layer over the chroot unpacked once (ChrootLayers),
+#    without and with the kept .debs, alternating as well.
 #
 # The chroot tarball lives in relspec's cache (XDG_CACHE_HOME): made by the
 # first --prepare when missing, and timed separately then. The layers need
@@ -88,10 +87,9 @@ def old_command(release, package)
 end
 
 # Runs +command+ (an sbuild command line) the new way: on a layer over the
-# chroot unpacked once into +layers+, with the apt download cache.
-def timed_layered(command, layers, lower, unpack_dir)
+# chroot unpacked once into +layers+, with the apt download cache when +apt+.
+def timed_layered(command, layers, lower, unpack_dir, apt)
   target = Relspec::Target.new("bookworm", "amd64")
-  apt = Relspec::Builder::AptCache.from_environment
   layers.layer do |upper, work, merged|
     sbuild = command.map { |word| word.start_with?("--chroot=") ? "--chroot=#{layers.empty_tarball}" : word }
     env = unpack_dir.environment([layers.config_line(merged), *apt&.config_lines(target)])
@@ -100,11 +98,18 @@ def timed_layered(command, layers, lower, unpack_dir)
 end
 
 def report(label, host, times)
-  puts format("  %-44s %s", label, times.map { |time| format("%5.1f s (ratio %4.1f)", time, time / host) }.join(", "))
+  puts format("  %-46s %s", label, times.map { |time| format("%5.1f s (ratio %4.1f)", time, time / host) }.join(", "))
+end
+
+def load_average
+  File.read("/proc/loadavg").split.first(3).join(" ")
 end
 
 PACKAGES = %w[base/small base/small2].freeze
 OLD = { "RELSPEC_CHROOT_LAYERS" => "off", "RELSPEC_APT_CACHE" => "off" }.freeze
+# old and new alternate, this many times each: the load of a shared machine
+# moves within a run
+ROUNDS = Integer(ENV.fetch("BENCH_ROUNDS", "2"), 10)
 
 Dir.mktmpdir("relspec-bench-sbuild") do |dir|
   release = BuildRelease.new(dir, "sbench")
@@ -112,35 +117,41 @@ Dir.mktmpdir("relspec-bench-sbuild") do |dir|
   release.compile
   build = %w[build specs/sbench.yml --out out --quiet --rebuild --jobs 1 --backend]
   prepare = relspec(dir, "build", "specs/sbench.yml", "--out", "out", "--quiet", "--prepare")
-  relspec(dir, *build, "host")
-  host = durations(release, PACKAGES).sum / PACKAGES.size
-  relspec(dir, *build, "sbuild", env: OLD)
-  before = durations(release, PACKAGES)
-  command = old_command(release, PACKAGES.first)
-  relspec(dir, *build, "sbuild")
-  after = durations(release, PACKAGES)
-
-  puts format("load average at the end: %s", File.read("/proc/loadavg").split.first(3).join(" "))
   puts format("first --prepare %.1f s (makes the chroot unless the cache has it)", prepare)
   puts format("per package (%s), relspec build's recorded durations:", PACKAGES.join(", "))
-  report("host backend", host, [host])
-  report("sbuild before: tarball per build, no kept .debs", host, before)
-  report("sbuild after: layers, kept .debs", host, after)
+  command = nil
+  ROUNDS.times do |round|
+    puts format(" round %d, load average %s", round + 1, load_average)
+    relspec(dir, *build, "host")
+    host = durations(release, PACKAGES).sum / PACKAGES.size
+    relspec(dir, *build, "sbuild", env: OLD)
+    before = durations(release, PACKAGES)
+    command ||= old_command(release, PACKAGES.first)
+    relspec(dir, *build, "sbuild")
+    after = durations(release, PACKAGES)
+    report("host backend", host, [host])
+    report("sbuild before: tarball per build, no kept .debs", host, before)
+    report("sbuild after: layers (one unpack per run), kept .debs", host, after)
+  end
 
   unpack_dir = Relspec::Builder::UnpackDir.new
   tmpfs = unpack_dir.environment
-  puts "sbuild alone, its phases (seconds):"
-  row("before#{tmpfs.empty? ? ' (no room on tmpfs)' : ', chroot on tmpfs'}", *timed_sbuild(command, tmpfs))
   ids = Relspec::Builder::SbuildBackend.layer_ids
-  if ids
-    tarball = command.find { |word| word.start_with?("--chroot=") }.delete_prefix("--chroot=")
-    layers = Relspec::Builder::ChrootLayers.new(tarball, unpack_dir.folder("bench"), uids: ids[0], gids: ids[1])
-    lower = nil
-    unpacked = Timing.seconds { lower = layers.lower(Relspec::Builder::Tool.new, "bench", File.join(dir, "unpack.log")) }
-    row("after: layer over the unpacked chroot", *timed_layered(command, layers, lower, unpack_dir))
-    puts format("  (the chroot unpacked once per run and target in %.1f s)", unpacked)
-  else
-    puts "  after: needs root (layers), not timed"
+  unless ids
+    puts "sbuild alone: the layers need root, not timed"
+    next
+  end
+  tarball = command.find { |word| word.start_with?("--chroot=") }.delete_prefix("--chroot=")
+  layers = Relspec::Builder::ChrootLayers.new(tarball, unpack_dir.folder("bench"), uids: ids[0], gids: ids[1])
+  lower = nil
+  unpacked = Timing.seconds { lower = layers.lower(Relspec::Builder::Tool.new, "bench", File.join(dir, "unpack.log")) }
+  apt = Relspec::Builder::AptCache.from_environment
+  puts format("sbuild alone, its phases (seconds; the chroot unpacked once in %.1f s):", unpacked)
+  ROUNDS.times do |round|
+    puts format(" round %d, load average %s", round + 1, load_average)
+    row("before#{tmpfs.empty? ? ' (no room on tmpfs)' : ', chroot on tmpfs'}", *timed_sbuild(command, tmpfs))
+    row("after: layer", *timed_layered(command, layers, lower, unpack_dir, nil))
+    row("after: layer, kept .debs", *timed_layered(command, layers, lower, unpack_dir, apt)) if apt
   end
   unpack_dir.close
 end
