@@ -37,10 +37,12 @@ module Relspec
       # the builds of a target (AptCache), nil for none; +layer_ids+: [[first
       # uid, count], [first gid, count]] of the subordinate ids sbuild maps
       # the chroot's users to, to build on the target's chroot unpacked once
-      # (ChrootLayers; root only), nil to unpack it in every build.
+      # (ChrootLayers; root only), nil to unpack it in every build (or a
+      # lambda returning either: read at the first local build, as a Slurm
+      # submit host builds nothing here and may have no subordinate ids).
       def initialize(tool, distributions, chroot_cache: nil, unpack_dir: UnpackDir.new,
                      ccache: Ccache.from_environment, apt_cache: AptCache.from_environment,
-                     layer_ids: SbuildBackend.layer_ids)
+                     layer_ids: -> { SbuildBackend.layer_ids })
         @tool = tool
         @distributions = distributions
         @chroot_cache = chroot_cache
@@ -136,9 +138,10 @@ module Relspec
 
       # The target's ChrootLayers, nil when builds unpack the tarball.
       def layers(target)
-        return nil unless @layer_ids
-
         @lock.synchronize do
+          @layer_ids = @layer_ids.call if @layer_ids.respond_to?(:call)
+          next nil unless @layer_ids
+
           @layers[target.to_s] ||= ChrootLayers.new(chroot(target).path, @unpack_dir.folder(target.dir_name),
                                                     uids: @layer_ids[0], gids: @layer_ids[1])
         end

@@ -119,4 +119,16 @@ RSpec.describe Relspec::Builder::SbuildBackend do
       expect(described_class.layer_ids(1000, env: {}, **files)).to be_nil
     end
   end
+
+  it "reads the subordinate ids only for a local build (a Slurm submit host may have none)" do
+    Dir.mktmpdir do |dir|
+      allow(Relspec::Builder::Chroot).to receive(:host_arch).and_return("amd64")
+      allow(described_class).to receive(:layer_ids).and_raise(Relspec::BuildError, "no subordinate ids")
+      backend = described_class.new(recorder.new([]), {}, chroot_cache: dir, unpack_dir: nil, ccache: nil, apt_cache: nil)
+      request = Relspec::Builder::Request.new(source: "rock-r-a", version: "1.0-1", dsc: "/in/rock-r-a_1.0-1.dsc",
+                                              target: Relspec::Target.new("bookworm", "amd64"), repositories: [],
+                                              local_debs: [], output_dir: File.join(dir, "out"), log: File.join(dir, "log"))
+      expect(backend.job_steps(request, "/work").first).to start_with("sbuild --chroot-mode=unshare")
+    end
+  end
 end
