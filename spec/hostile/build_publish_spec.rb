@@ -480,44 +480,25 @@ RSpec.describe "relspec build and publish under concurrency and faults", order: 
   ensure
     FileUtils.rm_rf(File.dirname(outside))
   end
-  it "case 6: refuses a ccache folder that is relative, a link or someone else's, before any build" do
+  it "case 6: refuses a ccache or apt download cache folder that is relative, a link or someone else's, before any build" do
     outside = Dir.mktmpdir("relspec-outside")
     File.write(File.join(outside, "precious.o"), "mine\n")
-    link = File.join(@dir, "ccache-link")
+    link = File.join(@dir, "cache-link")
     File.symlink(outside, link)
-    {
-      "cache" => "RELSPEC_CCACHE=cache: not an absolute folder (or \"off\")",
-      link => "ccache folder #{link} is not a folder (RELSPEC_CCACHE chooses another, \"off\" none)",
-      outside => "ccache folder #{outside} belongs to uid #{Process.uid}, not to the uid sbuild's build user has " \
-                 "here (#{File.read('/etc/subuid')[/^root:(\d+):/, 1]}): chown -R "
-    }.each do |folder, message|
-      run = relspec("build", spec, "--out", "out", "--backend", "sbuild", "--rebuild", chdir: @dir,
-                                                                                       env: { "RELSPEC_CCACHE" => folder })
-      expect([run.exit_code, run.stdout]).to eq([1, ""])
-      expect(run.stderr).to start_with("relspec: error: #{message}")
+    { "RELSPEC_CCACHE" => "ccache", "RELSPEC_APT_CACHE" => "apt download cache" }.each do |variable, what|
+      {
+        "cache" => "#{variable}=cache: not an absolute folder (or \"off\")",
+        link => "#{what} folder #{link} is not a folder (#{variable} chooses another, \"off\" none)",
+        outside => "#{what} folder #{outside} belongs to uid #{Process.uid}, not to the uid sbuild's build user has " \
+                   "here (#{File.read('/etc/subuid')[/^root:(\d+):/, 1]}): chown -R "
+      }.each do |folder, message|
+        run = relspec("build", spec, "--out", "out", "--backend", "sbuild", "--rebuild", chdir: @dir,
+                                                                                         env: { variable => folder })
+        expect([run.exit_code, run.stdout]).to eq([1, ""])
+        expect(run.stderr).to start_with("relspec: error: #{message}")
+      end
     end
     expect([Dir.children(outside), File.stat(outside).uid]).to eq([["precious.o"], Process.uid])
-  ensure
-    FileUtils.rm_rf(outside)
-  end
-
-  it "case 7: refuses an apt download cache folder that is relative, a link or someone else's, before any build" do
-    outside = Dir.mktmpdir("relspec-outside")
-    File.write(File.join(outside, "precious.deb"), "mine\n")
-    link = File.join(@dir, "apt-link")
-    File.symlink(outside, link)
-    {
-      "apt" => "RELSPEC_APT_CACHE=apt: not an absolute folder (or \"off\")",
-      link => "apt download cache folder #{link} is not a folder (RELSPEC_APT_CACHE chooses another, \"off\" none)",
-      outside => "apt download cache folder #{outside} belongs to uid #{Process.uid}, not to the uid sbuild's build " \
-                 "user has here (#{File.read('/etc/subuid')[/^root:(\d+):/, 1]}): chown -R "
-    }.each do |folder, message|
-      run = relspec("build", spec, "--out", "out", "--backend", "sbuild", "--rebuild", chdir: @dir,
-                                                                                       env: { "RELSPEC_APT_CACHE" => folder })
-      expect([run.exit_code, run.stdout]).to eq([1, ""])
-      expect(run.stderr).to start_with("relspec: error: #{message}")
-    end
-    expect([Dir.children(outside), File.stat(outside).uid]).to eq([["precious.deb"], Process.uid])
   ensure
     FileUtils.rm_rf(outside)
   end
