@@ -1,21 +1,24 @@
 # frozen_string_literal: true
 
 # bench/sbuild: the per-package cost of the sbuild backend (clean unshare
-# chroot) against the host backend, on the same small package, in one run,
-# and where an sbuild build's time goes.
+# chroot) against the host backend, on the same small packages, in one run,
+# before and after issue 48, and where an sbuild build's time goes.
 #
-# 1. relspec build --backend host, then --backend sbuild (as a user runs it:
-#    the chroot on tmpfs when there is room, apt's lists in the tarball,
-#    dpkg without fsync): each package's recorded duration, and the ratio.
-# 2. The backend's own sbuild command line (from the build's log) run again
-#    three ways, each line of its output timestamped: as the backend runs it
-#    now; with the chroot unpacked on disk (no SBUILD_CONFIG); and on a
-#    tarball made as relspec made it before issue 32 (no lists, fsync), on
-#    disk. Each row gives sbuild's phases (its section banners).
+# 1. relspec build of two small packages with --backend host, then with
+#    --backend sbuild the old way (RELSPEC_CHROOT_LAYERS=off and
+#    RELSPEC_APT_CACHE=off: the tarball unpacked in every build, every
+#    build-dependency downloaded) and the new way (the chroot unpacked once
+#    per run, a throw-away overlay layer per build, downloads kept per
+#    target), alternating BENCH_ROUNDS times (default 2): each package's
+#    recorded duration and the sbuild/host ratio.
+# 2. sbuild alone, each line of its output timestamped, its phases (its
+#    section banners): the old command line as the backend ran it, then the
+#    same build on a layer over the chroot unpacked once (ChrootLayers),
+#    without and with the kept .debs, alternating as well.
 #
 # The chroot tarball lives in relspec's cache (XDG_CACHE_HOME): made by the
-# first --prepare when missing, and timed separately then. The tarball of
-# the "before" row is made in a temporary folder by this bench.
+# first --prepare when missing, and timed separately then. The layers need
+# root (mounting an overlay); as another user the new way is the old one.
 #
 #   bundle exec ruby bench/sbuild.rb
 require "open3"
@@ -25,24 +28,30 @@ require "yaml"
 require_relative "timing"
 require_relative "../spec/support/build_release"
 $LOAD_PATH.unshift(File.expand_path("../lib", __dir__))
+require "relspec/builder/apt_cache"
 require "relspec/builder/chroot"
+require "relspec/builder/chroot_layers"
+require "relspec/builder/sbuild_backend"
+require "relspec/builder/tool"
 require "relspec/builder/unpack_dir"
+require "relspec/target"
 
 PHASES = [["start", nil], ["unpack chroot", /^Unpacking \S+ to /], ["apt-get update", /^\| Update chroot/],
           ["copy source", /^\| Fetch source files/], ["build-deps", /^\| Install package build dependencies/],
           ["build", /^\| Check architectures/], ["changes etc.", /^\| Changes/], ["clean up", /^\| Post Build/],
           ["end", /^\| Summary/]].freeze
 
-def relspec(dir, *args)
+def relspec(dir, *args, env: {})
   Timing.seconds do
-    output, status = Open3.capture2e(RbConfig.ruby, BuildRelease::EXE, *args, chdir: dir)
+    output, status = Open3.capture2e(env, RbConfig.ruby, BuildRelease::EXE, *args, chdir: dir)
     raise "relspec #{args.first} failed:\n#{output}" unless status.success?
   end
 end
 
-def duration(release)
+# Each package's recorded duration, in build order.
+def durations(release, packages)
   records = YAML.safe_load(File.read(File.join(release.target_dir, "build-results.yml"))).fetch("packages")
-  records.values.first.fetch("duration")
+  packages.map { |package| records.fetch(release.source(package)).fetch("duration") }
 end
 
 # Runs +command+ in a fresh folder, timestamping each output line; returns
@@ -71,39 +80,78 @@ def row(label, total, phases)
   puts format("  %-34s %6.1f s: %s", label, total, parts.join(", "))
 end
 
+# The sbuild command line the backend ran for +package+ the old way.
+def old_command(release, package)
+  log = File.read(File.join(release.target_dir, "logs", "#{release.source(package)}.log"))
+  log.lines.find { |line| line.start_with?("$ sbuild ") }.delete_prefix("$ ").split
+end
+
+# Runs +command+ (an sbuild command line) the new way: on a layer over the
+# chroot unpacked once into +layers+, with the apt download cache when +apt+.
+def timed_layered(command, layers, lower, unpack_dir, apt)
+  target = Relspec::Target.new("bookworm", "amd64")
+  layers.layer do |upper, work, merged|
+    sbuild = command.map { |word| word.start_with?("--chroot=") ? "--chroot=#{layers.empty_tarball}" : word }
+    env = unpack_dir.environment([layers.config_line(merged), *apt&.config_lines(target)])
+    timed_sbuild(layers.wrap(sbuild, lower, upper, work, merged), env)
+  end
+end
+
+def report(label, host, times)
+  puts format("  %-46s %s", label, times.map { |time| format("%5.1f s (ratio %4.1f)", time, time / host) }.join(", "))
+end
+
+def load_average
+  File.read("/proc/loadavg").split.first(3).join(" ")
+end
+
+PACKAGES = %w[base/small base/small2].freeze
+OLD = { "RELSPEC_CHROOT_LAYERS" => "off", "RELSPEC_APT_CACHE" => "off" }.freeze
+# old and new alternate, this many times each: the load of a shared machine
+# moves within a run
+ROUNDS = Integer(ENV.fetch("BENCH_ROUNDS", "2"), 10)
+
 Dir.mktmpdir("relspec-bench-sbuild") do |dir|
   release = BuildRelease.new(dir, "sbench")
-  release.package("base/small")
+  PACKAGES.each { |package| release.package(package) }
   release.compile
-  build = %w[build specs/sbench.yml --out out --quiet --rebuild --backend]
+  build = %w[build specs/sbench.yml --out out --quiet --rebuild --jobs 1 --backend]
   prepare = relspec(dir, "build", "specs/sbench.yml", "--out", "out", "--quiet", "--prepare")
-  relspec(dir, *build, "host")
-  host = duration(release)
-  relspec(dir, *build, "sbuild")
-  sbuild = duration(release)
+  puts format("first --prepare %.1f s (makes the chroot unless the cache has it)", prepare)
+  puts format("per package (%s), relspec build's recorded durations:", PACKAGES.join(", "))
+  command = nil
+  ROUNDS.times do |round|
+    puts format(" round %d, load average %s", round + 1, load_average)
+    relspec(dir, *build, "host")
+    host = durations(release, PACKAGES).sum / PACKAGES.size
+    relspec(dir, *build, "sbuild", env: OLD)
+    before = durations(release, PACKAGES)
+    command ||= old_command(release, PACKAGES.first)
+    relspec(dir, *build, "sbuild")
+    after = durations(release, PACKAGES)
+    report("host backend", host, [host])
+    report("sbuild before: tarball per build, no kept .debs", host, before)
+    report("sbuild after: layers (one unpack per run), kept .debs", host, after)
+  end
 
-  puts format("first --prepare             %6.1f s (makes the chroot unless the cache has it)", prepare)
-  puts format("host backend, one package   %6.1f s", host)
-  puts format("sbuild, same package        %6.1f s  (overhead %.1f s per package, ratio %.1f)", sbuild,
-              sbuild - host, sbuild / host)
-
-  log = File.read(File.join(release.target_dir, "logs", "#{release.source('base/small')}.log"))
-  command = log.lines.first.delete_prefix("$ ").split
   unpack_dir = Relspec::Builder::UnpackDir.new
   tmpfs = unpack_dir.environment
-  puts "sbuild alone, its phases (seconds):"
-  row("now#{tmpfs.empty? ? ' (no room on tmpfs)' : ', chroot on tmpfs'}", *timed_sbuild(command, tmpfs))
-  unpack_dir.close
-  row("now, chroot on disk", *timed_sbuild(command, {}))
-
-  old = File.join(dir, "before.tar.zst")
-  sources = Relspec::Builder::Chroot.host_sources
-  made = Timing.seconds do
-    output, status = Open3.capture2e("mmdebstrap", "--variant=buildd", "--mode=unshare", "--arch=amd64",
-                                     "--include=debhelper", "bookworm", old, *sources)
-    raise "mmdebstrap failed:\n#{output}" unless status.success?
+  ids = Relspec::Builder::SbuildBackend.layer_ids
+  unless ids
+    puts "sbuild alone: the layers need root, not timed"
+    next
   end
-  before = command.map { |word| word.start_with?("--chroot=") ? "--chroot=#{old}" : word }
-  row("before: no lists, fsync, on disk", *timed_sbuild(before, {}))
-  puts format("  (that tarball made in %.1f s)", made)
+  tarball = command.find { |word| word.start_with?("--chroot=") }.delete_prefix("--chroot=")
+  layers = Relspec::Builder::ChrootLayers.new(tarball, unpack_dir.folder("bench"), uids: ids[0], gids: ids[1])
+  lower = nil
+  unpacked = Timing.seconds { lower = layers.lower(Relspec::Builder::Tool.new, "bench", File.join(dir, "unpack.log")) }
+  apt = Relspec::Builder::AptCache.from_environment
+  puts format("sbuild alone, its phases (seconds; the chroot unpacked once in %.1f s):", unpacked)
+  ROUNDS.times do |round|
+    puts format(" round %d, load average %s", round + 1, load_average)
+    row("before#{tmpfs.empty? ? ' (no room on tmpfs)' : ', chroot on tmpfs'}", *timed_sbuild(command, tmpfs))
+    row("after: layer", *timed_layered(command, layers, lower, unpack_dir, nil))
+    row("after: layer, kept .debs", *timed_layered(command, layers, lower, unpack_dir, apt)) if apt
+  end
+  unpack_dir.close
 end

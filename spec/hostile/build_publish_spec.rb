@@ -489,27 +489,29 @@ RSpec.describe "relspec build and publish under concurrency and faults", order: 
   end
   # Issue 46, case 15: an empty folder of another user was given to the
   # build user (chown to the subordinate uid, mode 0700) without a word.
-  it "case 6: refuses a ccache folder that is relative, a link or someone else's (empty or not), before any build" do
+  it "case 6: refuses a ccache or apt download cache folder that is relative, a link or someone else's (empty or not), before any build" do
     outside = Dir.mktmpdir("relspec-outside")
     File.write(File.join(outside, "precious.o"), "mine\n")
-    link = File.join(@dir, "ccache-link")
+    link = File.join(@dir, "cache-link")
     File.symlink(outside, link)
     foreign = Dir.mktmpdir("relspec-foreign") # empty, another user's
     File.chmod(0o755, foreign)
     File.chown(4242, 4242, foreign)
     build_uid = File.read("/etc/subuid")[/^root:(\d+):/, 1]
-    {
-      "cache" => "RELSPEC_CCACHE=cache: not an absolute folder (or \"off\")",
-      link => "ccache folder #{link} is not a folder (RELSPEC_CCACHE chooses another, \"off\" none)",
-      outside => "ccache folder #{outside} belongs to uid #{Process.uid}, not to the uid sbuild's build user has " \
-                 "here (#{build_uid}): chown -R ",
-      foreign => "ccache folder #{foreign} belongs to uid 4242, not to the uid sbuild's build user has here " \
-                 "(#{build_uid}): chown -R "
-    }.each do |folder, message|
-      run = relspec("build", spec, "--out", "out", "--backend", "sbuild", "--rebuild", chdir: @dir,
-                                                                                       env: { "RELSPEC_CCACHE" => folder })
-      expect([run.exit_code, run.stdout]).to eq([1, ""])
-      expect(run.stderr).to start_with("relspec: error: #{message}")
+    { "RELSPEC_CCACHE" => "ccache", "RELSPEC_APT_CACHE" => "apt download cache" }.each do |variable, what|
+      {
+        "cache" => "#{variable}=cache: not an absolute folder (or \"off\")",
+        link => "#{what} folder #{link} is not a folder (#{variable} chooses another, \"off\" none)",
+        outside => "#{what} folder #{outside} belongs to uid #{Process.uid}, not to the uid sbuild's build user has " \
+                   "here (#{build_uid}): chown -R ",
+        foreign => "#{what} folder #{foreign} belongs to uid 4242, not to the uid sbuild's build user has here " \
+                   "(#{build_uid}): chown -R "
+      }.each do |folder, message|
+        run = relspec("build", spec, "--out", "out", "--backend", "sbuild", "--rebuild", chdir: @dir,
+                                                                                         env: { variable => folder })
+        expect([run.exit_code, run.stdout]).to eq([1, ""])
+        expect(run.stderr).to start_with("relspec: error: #{message}")
+      end
     end
     expect([Dir.children(outside), File.stat(outside).uid]).to eq([["precious.o"], Process.uid])
     expect([Dir.children(foreign), File.stat(foreign).uid, File.stat(foreign).mode & 0o777]).to eq([[], 4242, 0o755])

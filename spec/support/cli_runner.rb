@@ -56,7 +56,10 @@ module CliRunner
   # Only root's builds have one (Relspec::Builder::Ccache).
   CCACHE = File.join(Dir.mktmpdir("relspec-test-ccache").tap { |dir| File.chmod(0o755, dir) }, "ccache")
   at_exit { FileUtils.rm_rf(File.dirname(CCACHE)) }
-  CCACHE_ENV = Process.uid.zero? ? { "RELSPEC_CCACHE" => CCACHE } : {}
+  # The sbuild builds' downloaded build-dependencies (RELSPEC_APT_CACHE),
+  # of the test run as well, beside the compiler cache for the same reason.
+  APT_CACHE = File.join(File.dirname(CCACHE), "apt")
+  CCACHE_ENV = Process.uid.zero? ? { "RELSPEC_CCACHE" => CCACHE, "RELSPEC_APT_CACHE" => APT_CACHE } : {}
 
   # +env+: more environment variables; +umask+: the child's umask;
   # +within+: a command that runs relspec's process as its last arguments

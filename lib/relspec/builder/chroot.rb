@@ -31,7 +31,9 @@ module Relspec
       # every build with the compiler cache (Ccache) depends on it; in the
       # tarball, that costs a build nothing (a tarball made without it has
       # apt install it in each build, which works the same, only slower).
-      INCLUDE = %w[debhelper ccache].freeze
+      # fakeroot: sbuild adds it to every build's dependencies itself, so
+      # having it hides no missing Build-Depends.
+      INCLUDE = %w[debhelper ccache fakeroot].freeze
       # the lists kept (see above), dpkg without fsync in every later build
       SPEED = %w[--skip=cleanup/apt/lists --dpkgopt=force-unsafe-io].freeze
       # ccache's compiler links (/usr/lib/ccache) made again once everything

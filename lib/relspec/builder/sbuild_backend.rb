@@ -1,9 +1,12 @@
 # frozen_string_literal: true
 
+require "etc"
 require "fileutils"
 require "tmpdir"
+require_relative "apt_cache"
 require_relative "ccache"
 require_relative "chroot"
+require_relative "chroot_layers"
 require_relative "../error"
 require_relative "produced_files"
 require_relative "shell_line"
@@ -30,15 +33,37 @@ module Relspec
       # folder of chroot tarballs (default: relspec's cache); +unpack_dir+:
       # where each build's chroot is unpacked (UnpackDir: tmpfs when there
       # is room); +ccache+: the compiler cache bound into each build's
-      # chroot (Ccache), nil for none.
+      # chroot (Ccache), nil for none; +apt_cache+: the .debs downloaded for
+      # the builds of a target (AptCache), nil for none; +layer_ids+: [[first
+      # uid, count], [first gid, count]] of the subordinate ids sbuild maps
+      # the chroot's users to, to build on the target's chroot unpacked once
+      # (ChrootLayers; root only), nil to unpack it in every build (or a
+      # lambda returning either: read at the first local build, as a Slurm
+      # submit host builds nothing here and may have no subordinate ids).
       def initialize(tool, distributions, chroot_cache: nil, unpack_dir: UnpackDir.new,
-                     ccache: Ccache.from_environment)
+                     ccache: Ccache.from_environment, apt_cache: AptCache.from_environment,
+                     layer_ids: -> { SbuildBackend.layer_ids })
         @tool = tool
         @distributions = distributions
         @chroot_cache = chroot_cache
         @unpack_dir = unpack_dir
         @ccache = ccache
+        @apt_cache = apt_cache
+        @layer_ids = layer_ids
         @chroots = {}
+        @layers = {}
+        @lock = Mutex.new
+      end
+
+      # The subordinate id ranges of root, which lays chroots out in layers
+      # (mounting an overlay needs root); nil for anybody else, and when
+      # RELSPEC_CHROOT_LAYERS=off in +env+ (a kernel without overlayfs, or a
+      # bench timing the tarball unpacked in every build).
+      def self.layer_ids(uid = Process.uid, env: ENV, subuid: "/etc/subuid", subgid: "/etc/subgid")
+        return nil unless uid.zero? && env["RELSPEC_CHROOT_LAYERS"] != "off"
+
+        user = Etc.getpwuid(uid).name
+        [ChrootLayers.range(subuid, user), ChrootLayers.range(subgid, user)]
       end
 
       def name
@@ -51,28 +76,29 @@ module Relspec
       end
 
       # Makes the target's chroot tarball unless it exists; true if it did.
-      # The compiler cache's folder first: a folder relspec must refuse
-      # stops the run before any chroot is made.
+      # The caches' folders first: a folder relspec must refuse stops the
+      # run before any chroot is made.
       def prepare(target, log:)
         @ccache&.prepare
+        @apt_cache&.prepare
         chroot(target).ensure(log)
       end
 
       def build(request)
         prepare(request.target, log: request.log)
         Dir.mktmpdir("relspec-sbuild") do |work|
-          # in a Slurm job (#job_steps) neither: its nodes have other folders
-          environment = @unpack_dir.environment(@ccache ? @ccache.config_lines : [])
-          @tool.run(request.source, command(request, work), log: request.log, chdir: work, env: environment)
+          layers = layers(request.target)
+          layers ? run_layered(layers, request, work) : run(request, work, command(request, work))
           ProducedFiles.collect(work, request.output_dir)
         end
       end
 
-      # sbuild's command line for +request+, building in the folder +work+;
-      # the same on this machine and in a Slurm job. +local_debs+ may name
-      # folders of .debs (sbuild takes every .deb in them).
-      def command(request, work)
-        ["sbuild", "--chroot-mode=unshare", "--chroot=#{chroot(request.target).path}",
+      # sbuild's command line for +request+, building in the folder +work+
+      # on the chroot tarball +tarball+; the same on this machine and in a
+      # Slurm job. +local_debs+ may name folders of .debs (sbuild takes
+      # every .deb in them).
+      def command(request, work, tarball = chroot(request.target).path)
+        ["sbuild", "--chroot-mode=unshare", "--chroot=#{tarball}",
          "--dist=#{request.target.codename}", "--arch=#{request.target.arch}", "--arch-all", "--no-source",
          "--no-run-lintian", "--no-run-piuparts", "--no-run-autopkgtest", "--no-apt-upgrade",
          "--no-apt-distupgrade", "--nolog", "--build-dir=#{work}",
@@ -93,6 +119,33 @@ module Relspec
       end
 
       private
+
+      # Runs sbuild; +lines+: more lines of its configuration. In a Slurm job
+      # (#job_steps) none of them: its nodes have other folders.
+      def run(request, work, command, lines = [])
+        environment = @unpack_dir.environment([*lines, *@ccache&.config_lines, *@apt_cache&.config_lines(request.target)])
+        @tool.run(request.source, command, log: request.log, chdir: work, env: environment, name: "sbuild")
+      end
+
+      # Runs sbuild on a layer of its own over the target's unpacked chroot.
+      def run_layered(layers, request, work)
+        lower = layers.lower(@tool, request.source, request.log)
+        layers.layer do |upper, overlay_work, merged|
+          command = layers.wrap(command(request, work, layers.empty_tarball), lower, upper, overlay_work, merged)
+          run(request, work, command, [layers.config_line(merged)])
+        end
+      end
+
+      # The target's ChrootLayers, nil when builds unpack the tarball.
+      def layers(target)
+        @lock.synchronize do
+          @layer_ids = @layer_ids.call if @layer_ids.respond_to?(:call)
+          next nil unless @layer_ids
+
+          @layers[target.to_s] ||= ChrootLayers.new(chroot(target).path, @unpack_dir.folder(target.dir_name),
+                                                    uids: @layer_ids[0], gids: @layer_ids[1])
+        end
+      end
 
       def chroot(target)
         @chroots[target.to_s] ||= Chroot.new(target, @distributions[target.codename], @tool,

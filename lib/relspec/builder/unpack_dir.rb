@@ -1,5 +1,6 @@
 # frozen_string_literal: true
 
+require "digest"
 require "fileutils"
 require "open3"
 require "tmpdir"
@@ -45,11 +46,12 @@ module Relspec
         @free_bytes = free_bytes
         @lock = Mutex.new
         @root = nil
+        @disk = nil
       end
 
       # The environment of one sbuild run: SBUILD_CONFIG naming a file that
       # puts the chroot on tmpfs, or nothing (sbuild's default) when tmpfs
-      # or memory is short now. +extra+: more lines of that file (Ccache's),
+      # or memory is short now. +extra+: more lines of that file (Ccache's, AptCache's),
       # written also when the chroot goes to disk.
       def environment(extra = [])
         on_tmpfs = room?
@@ -58,12 +60,25 @@ module Relspec
         { "SBUILD_CONFIG" => config(on_tmpfs, extra) }
       end
 
-      # Removes this process's folder (the chroots of finished builds are
+      # A folder +name+ in this process's folder, on tmpfs when there is
+      # room now, else on disk (ChrootLayers lays a target's chroot out in
+      # it); removed by #close like the rest.
+      def folder(name)
+        on_tmpfs = room?
+        @lock.synchronize do
+          root = on_tmpfs ? (@root ||= make_root) : (@disk ||= make_disk_root)
+          path = File.join(root, name)
+          FileUtils.mkdir_p(path, mode: 0o755)
+          path
+        end
+      end
+
+      # Removes this process's folders (the chroots of finished builds are
       # gone already: sbuild removes them).
       def close
         @lock.synchronize do
-          FileUtils.rm_rf(@root) if @root
-          @root = nil
+          FileUtils.rm_rf([@root, @disk].compact)
+          @root = @disk = nil
         end
       end
 
@@ -78,15 +93,17 @@ module Relspec
 
       private
 
-      # The config file in this process's folder, written once per content
-      # (a build's chroot goes to tmpfs or not as the room is at its start).
+      # The config file in this process's folder, one per content and named
+      # by it: a build's chroot goes to tmpfs or not as the room is at its
+      # start, and the lines differ per target (AptCache's folder), so a
+      # build never reads a file another build is writing.
       def config(on_tmpfs, extra)
         @lock.synchronize do
           @root ||= make_root
           lines = on_tmpfs ? ["$unshare_tmpdir_template = '#{@root}/chroot.XXXXXXXXXX';"] : []
           text = [*lines, *extra, "1;"].join("\n") << "\n"
-          path = File.join(@root, on_tmpfs ? "sbuild.conf" : "sbuild-disk.conf")
-          File.write(path, text) unless File.file?(path) && File.read(path) == text
+          path = File.join(@root, "sbuild-#{Digest::SHA256.hexdigest(text)[0, 16]}.conf")
+          File.write(path, text) unless File.file?(path)
           path
         end
       end
@@ -100,6 +117,15 @@ module Relspec
         root = Temporaries.path(@shm, "sbuild")
         # sbuild's namespace root (a subordinate uid) makes the chroot
         # folder inside and must reach it
+        FileUtils.mkdir(root, mode: 0o755)
+        root
+      end
+
+      # This process's folder on disk, beside what killed runs left there.
+      def make_disk_root
+        Temporaries.sweep(Dir.tmpdir)
+        root = Temporaries.path(Dir.tmpdir, "sbuild-disk")
+        # sbuild's namespace root reaches the chroot's layers through it
         FileUtils.mkdir(root, mode: 0o755)
         root
       end

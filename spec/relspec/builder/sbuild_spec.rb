@@ -31,10 +31,20 @@ RSpec.describe "relspec build --backend sbuild", order: :defined do
     @release.osdeps("pkg-config:\n  debian: pkg-config\n")
     hello = "enable_language(CXX)\nadd_executable(hello hello.cpp)"
     cpp = { "hello.cpp" => "#include <string>\nint main() { return std::string(\"hello\").size() == 5 ? 0 : 1; }\n" }
-    @release.package("base/one", cmake: "install(FILES one-config.cmake DESTINATION share/cmake/one)\n#{hello}",
+    # only in sbuild's chroot (its builds are below /build): the host
+    # backend's builds below share this machine's /tmp
+    chroot = 'CMAKE_CURRENT_SOURCE_DIR MATCHES "^/build/"'
+    mark = ->(name) { "\nif(#{chroot})\n  execute_process(COMMAND touch /tmp/relspec-#{name}-was-here)\nendif()" }
+    @release.package("base/one", cmake: "install(FILES one-config.cmake DESTINATION share/cmake/one)\n#{hello}#{mark['one']}",
                                  osdeps: ["pkg-config"], files: { "one-config.cmake" => "find_package(PkgConfig REQUIRED)\nfind_package(Ruby REQUIRED)\n" }.merge(cpp))
+    # base/three builds beside base/one (--jobs 2), each on its own layer
+    # over the same unpacked chroot; base/two, after base/one, must not see
+    # the file base/one's build left in its chroot's /tmp (nor base/three's)
+    @release.package("base/three", cmake: "#{hello}#{mark['three']}", files: cpp)
+    unseen = "\nif(#{chroot} AND (EXISTS /tmp/relspec-one-was-here OR EXISTS /tmp/relspec-three-was-here))\n  " \
+             "message(FATAL_ERROR \"another build's file\")\nendif()"
     # the language first: FindRuby finds no library in a project without one
-    @release.package("base/two", dependencies: ["base/one"], cmake: "#{hello}\nfind_package(one REQUIRED)", files: cpp)
+    @release.package("base/two", dependencies: ["base/one"], cmake: "#{hello}\nfind_package(one REQUIRED)#{unseen}", files: cpp)
     @release.compile
   end
 
@@ -58,7 +68,7 @@ RSpec.describe "relspec build --backend sbuild", order: :defined do
     expect(File.size(chroot)).to be > 10_000_000
     results = YAML.safe_load(File.read(File.join(@release.target_dir, "build-results.yml")))
     expect(results.fetch("backend")).to eq("sbuild")
-    expect(results.fetch("packages").values.map { |record| record["status"] }).to eq(%w[built built])
+    expect(results.fetch("packages").values.map { |record| record["status"] }).to eq(%w[built built built])
     two = File.read(File.join(@release.target_dir, "logs", "#{@release.source('base/two')}.log"))
     expect(two).to include("--chroot-mode=unshare", "--extra-package=", "#{@release.source('base/one')}_")
     # sbuild installed the build-dependency built a moment ago in the chroot,
@@ -68,6 +78,32 @@ RSpec.describe "relspec build --backend sbuild", order: :defined do
     expect(two).to include("Found PkgConfig: /usr/bin/pkg-config")
     expect(two).to match(/Unpacking ruby-dev:amd64 /)
     expect(two).to match(/Found Ruby: .*ruby/)
+    # fakeroot, which sbuild adds to every build, is in the chroot already
+    expect(two).to include("Merged Build-Depends:").and include("fakeroot")
+    expect(two).not_to match(/^Unpacking fakeroot /)
+
+    # The chroot is unpacked once (by base/one's or base/three's build,
+    # whichever started first), and each build runs on a layer of its own
+    # over it: base/two installed pkg-config again (above), so base/one's
+    # did not reach it, nor did the files base/one and base/three left.
+    one, three = %w[base/one base/three].map do |package|
+      File.read(File.join(@release.target_dir, "logs", "#{@release.source(package)}.log"))
+    end
+    if Process.uid.zero?
+      unpacking = "$ unshare --user --map-users="
+      expect([one, two, three].map { |log| log.include?(unpacking) }.count(true)).to eq(1)
+      expect(two).not_to include(unpacking)
+      expect(two).to match(/^\$ unshare --mount --propagation private -- .* sbuild .*--chroot=\S+empty\.tar /)
+      expect(two).not_to include("bookworm-amd64.tar.zst")
+
+      # The .debs base/one downloaded (cmake) are kept for the target and
+      # base/two takes them from there.
+      cmake = %r{^Get:\d+ http\S+ bookworm/main amd64 cmake amd64 }
+      expect(one).to match(cmake)
+      expect(two).to match(/^(Unpacking|Preparing to unpack) .*cmake_/)
+      expect(two).not_to match(cmake)
+      expect(Dir.children(File.join(CliRunner::APT_CACHE, "bookworm-amd64"))).to include(a_string_matching(/\Acmake_.*\.deb\z/))
+    end
 
     # ccache: on the build's PATH, its folder bound in; base/one's compile
     # missed, base/two's hit. The folder belongs to the chroot's build user
@@ -87,7 +123,7 @@ RSpec.describe "relspec build --backend sbuild", order: :defined do
 
     # Another backend's builds are not reused: host builds both again.
     host = relspec("build", "specs/sb.yml", "--out", "out", "--backend", "host", chdir: @dir)
-    expect(host.stdout).to include("bookworm/amd64: 2 built, 0 already built")
+    expect(host.stdout).to include("bookworm/amd64: 3 built, 0 already built")
   end
 
   it "says which setting provides a mirror when a chroot cannot be made" do

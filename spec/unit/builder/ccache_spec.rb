@@ -49,7 +49,7 @@ RSpec.describe Relspec::Builder::Ccache do
     expect(File.stat(dir).mode & 0o777).to eq(0o700)
     expect(File.stat(File.dirname(dir)).mode & 0o777).to eq(0o755)
     expect(lines).to eq(
-      ["$unshare_bind_mounts = [ { directory => '#{dir}', mountpoint => '/var/cache/ccache' } ];",
+      ["push @{$unshare_bind_mounts}, { directory => '#{dir}', mountpoint => '/var/cache/ccache' };",
        "$build_environment = { 'CCACHE_DIR' => '/var/cache/ccache', 'CCACHE_BASEDIR' => '/build', " \
        "'CCACHE_MAXSIZE' => '5G' };",
        "$path = '/usr/lib/ccache:/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin:/usr/games';",

@@ -18,7 +18,7 @@ RSpec.describe Relspec::Builder::Chroot do
       target = Relspec::Target.new("bookworm", "amd64")
       chroot = described_class.new(target, distribution, nil, cache_dir: cache, emulation: nil)
       step = chroot.job_steps.first
-      expect(step).to include("mmdebstrap --variant=buildd --mode=unshare --arch=amd64 --include=debhelper,ccache " \
+      expect(step).to include("mmdebstrap --variant=buildd --mode=unshare --arch=amd64 --include=debhelper,ccache,fakeroot " \
                               "--skip=cleanup/apt/lists --dpkgopt=force-unsafe-io " \
                               "--chrooted-customize-hook=update-ccache-symlinks bookworm ")
       expect(step).to include(" http://deb.example.org/debian && mv ")

@@ -10,13 +10,13 @@ require "relspec/builder/request"
 RSpec.describe Relspec::Builder::SbuildBackend do
   let(:recorder) do
     Struct.new(:runs) do
-      def run(source, command, log:, chdir: nil, env: {})
-        runs << { source: source, command: command, log: log, chdir: chdir, env: env }
+      def run(source, command, log:, chdir: nil, env: {}, stdin: nil, name: nil)
+        runs << { source: source, command: command, log: log, chdir: chdir, env: env, stdin: stdin, name: name }
       end
     end
   end
 
-  it "runs sbuild with the environment of where the chroot is unpacked and of the compiler cache" do
+  it "runs sbuild with the environment of where the chroot is unpacked, of the compiler cache and of the target's apt download cache" do
     Dir.mktmpdir do |dir|
       cache = File.join(dir, "chroots")
       FileUtils.mkdir_p(cache)
@@ -31,7 +31,11 @@ RSpec.describe Relspec::Builder::SbuildBackend do
         end
       end.new
       ccache = Relspec::Builder::Ccache.new(File.join(dir, "ccache"), owner: [Process.uid, Process.gid])
-      backend = described_class.new(tool, {}, chroot_cache: cache, unpack_dir: unpack, ccache: ccache)
+      folder = Relspec::Builder::BuildUserFolder.new(File.join(dir, "apt"), owner: [Process.uid, Process.gid],
+                                                                            what: "apt download cache", variable: "V")
+      apt_cache = Relspec::Builder::AptCache.new(folder)
+      backend = described_class.new(tool, {}, chroot_cache: cache, unpack_dir: unpack, ccache: ccache,
+                                              apt_cache: apt_cache, layer_ids: nil)
       request = Relspec::Builder::Request.new(source: "rock-r-a", version: "1.0-1", dsc: "/in/rock-r-a_1.0-1.dsc",
                                               target: Relspec::Target.new("bookworm", "amd64"), repositories: [],
                                               local_debs: [], output_dir: File.join(dir, "out"), log: File.join(dir, "log"))
@@ -40,9 +44,91 @@ RSpec.describe Relspec::Builder::SbuildBackend do
       run = tool.runs.fetch(0)
       expect(run[:env]).to eq("SBUILD_CONFIG" => "/dev/shm/x/sbuild.conf")
       expect(run[:command]).to include("sbuild", "--chroot-mode=unshare", "/in/rock-r-a_1.0-1.dsc")
-      # the compiler cache's lines go into that file, not onto the command line
-      expect(unpack.extra).to eq(ccache.config_lines)
-      expect(run[:command].join(" ")).not_to include("ccache")
+      # the caches' lines go into that file, not onto the command line
+      target = Relspec::Target.new("bookworm", "amd64")
+      expect(unpack.extra).to eq(ccache.config_lines + apt_cache.config_lines(target))
+      expect(unpack.extra.join).to include("#{dir}/apt/bookworm-amd64")
+      expect(run[:command].join(" ")).not_to include("ccache", "relspec-apt", "#{dir}/apt")
+    end
+  end
+
+  it "builds on a layer of its own over the target's chroot, unpacked once, and removes the layer after the build" do
+    Dir.mktmpdir do |dir|
+      cache = File.join(dir, "chroots")
+      FileUtils.mkdir_p(cache)
+      tarball = File.join(cache, "bookworm-amd64.tar.zst")
+      File.write(tarball, "")
+      tool = recorder.new([])
+      folders = File.join(dir, "run")
+      unpack = Class.new do
+        attr_reader :extra
+
+        def initialize(root)
+          @root = root
+        end
+
+        def folder(name)
+          File.join(@root, name).tap { |path| FileUtils.mkdir_p(path) }
+        end
+
+        def environment(extra)
+          @extra = extra
+          {}
+        end
+      end.new(folders)
+      ids = [[Process.uid, 1], [Process.gid, 1]]
+      backend = described_class.new(tool, {}, chroot_cache: cache, unpack_dir: unpack, ccache: nil, apt_cache: nil,
+                                              layer_ids: ids)
+      allow(Relspec::Builder::Chroot).to receive(:host_arch).and_return("amd64")
+      2.times do |index|
+        request = Relspec::Builder::Request.new(source: "rock-r-#{index}", version: "1.0-1", dsc: "/in/r_1.0-1.dsc",
+                                                target: Relspec::Target.new("bookworm", "amd64"), repositories: [],
+                                                local_debs: [], output_dir: File.join(dir, "out#{index}"),
+                                                log: File.join(dir, "log"))
+        backend.build(request)
+      end
+      lower = File.join(folders, "bookworm-amd64", "lower")
+      unpacking, first, second = tool.runs
+      expect(tool.runs.size).to eq(3)
+      expect([unpacking[:stdin], unpacking[:name], unpacking[:command].last]).to eq([tarball, "unpacking the chroot", lower])
+      expect(unpacking[:command].first(3)).to eq(["unshare", "--user", "--map-users=#{Process.uid},0,1"])
+      [first, second].each do |run|
+        command = run[:command]
+        expect(command.first(4)).to eq(["unshare", "--mount", "--propagation", "private"])
+        layer_lower, upper, work, merged = command[9, 4]
+        expect(layer_lower).to eq(lower)
+        expect([upper, work, merged].map { |path| File.basename(path) }).to eq(%w[upper work merged])
+        expect(command).to include("sbuild", "--chroot=#{File.join(folders, 'bookworm-amd64', 'empty.tar')}")
+        expect(run[:name]).to eq("sbuild")
+        # the layer is gone, the lower layer stays for the next build
+        expect(File.exist?(File.dirname(upper))).to be(false)
+      end
+      expect(first[:command][10]).not_to eq(second[:command][10])
+      expect(unpack.extra).to eq(["unshift @{$unshare_bind_mounts}, { directory => '#{second[:command][12]}', mountpoint => '/' };"])
+      expect(File.size(File.join(folders, "bookworm-amd64", "empty.tar"))).to eq(1024)
+    end
+  end
+
+  it "lays chroots out in layers for root, with its subordinate ranges, unless RELSPEC_CHROOT_LAYERS=off" do
+    Dir.mktmpdir do |dir|
+      File.write(File.join(dir, "subuid"), "root:100000:65536\n")
+      File.write(File.join(dir, "subgid"), "root:200000:1000\n")
+      files = { subuid: File.join(dir, "subuid"), subgid: File.join(dir, "subgid") }
+      expect(described_class.layer_ids(0, env: {}, **files)).to eq([[100_000, 65_536], [200_000, 1000]])
+      expect(described_class.layer_ids(0, env: { "RELSPEC_CHROOT_LAYERS" => "off" }, **files)).to be_nil
+      expect(described_class.layer_ids(1000, env: {}, **files)).to be_nil
+    end
+  end
+
+  it "reads the subordinate ids only for a local build (a Slurm submit host may have none)" do
+    Dir.mktmpdir do |dir|
+      allow(Relspec::Builder::Chroot).to receive(:host_arch).and_return("amd64")
+      allow(described_class).to receive(:layer_ids).and_raise(Relspec::BuildError, "no subordinate ids")
+      backend = described_class.new(recorder.new([]), {}, chroot_cache: dir, unpack_dir: nil, ccache: nil, apt_cache: nil)
+      request = Relspec::Builder::Request.new(source: "rock-r-a", version: "1.0-1", dsc: "/in/rock-r-a_1.0-1.dsc",
+                                              target: Relspec::Target.new("bookworm", "amd64"), repositories: [],
+                                              local_debs: [], output_dir: File.join(dir, "out"), log: File.join(dir, "log"))
+      expect(backend.job_steps(request, "/work").first).to start_with("sbuild --chroot-mode=unshare")
     end
   end
 end

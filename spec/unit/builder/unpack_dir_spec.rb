@@ -79,4 +79,17 @@ RSpec.describe Relspec::Builder::UnpackDir do
     expect(unpack_dir(available_kib: 2 * 1024 * 1024, free: 2 * (1024**3)).environment).to eq({})
     expect(Dir.exist?(@shm)).to be(false)
   end
+
+  it "gives folders on tmpfs when there is room, else on disk, and removes both when closed" do
+    dir = unpack_dir(available_kib: 2 * 1024 * 1024, free: 2 * (1024**3))
+    layers = dir.folder("bookworm-amd64")
+    expect(File.dirname(layers, 2)).to eq(@shm)
+    expect(dir.folder("bookworm-amd64")).to eq(layers)
+    short = unpack_dir(available_kib: 512 * 1024, free: 2 * (1024**3))
+    disk = short.folder("bookworm-amd64")
+    expect(File.dirname(disk, 2)).to eq(Dir.tmpdir)
+    expect(File.stat(File.dirname(disk)).mode & 0o777).to eq(0o755)
+    [dir, short].each(&:close)
+    expect([layers, disk].map { |path| File.exist?(path) }).to eq([false, false])
+  end
 end

@@ -1,0 +1,129 @@
+# frozen_string_literal: true
+
+require "fileutils"
+require "securerandom"
+require_relative "../error"
+require_relative "build_user_folder"
+
+module Relspec
+  module Builder
+    # The chroot of a target unpacked once per relspec run (the lower
+    # layer) and a throw-away overlay layer over it for each sbuild build,
+    # so that no build pays for unpacking the tarball and deleting the tree,
+    # and no build sees another's changes: each writes only into its own
+    # upper layer, removed when it ends.
+    #
+    # sbuild (0.85, and backports' 0.89) cannot do this itself: its unshare
+    # mode always unpacks a tarball into a fresh folder (docs/build.md). So
+    # relspec gives sbuild an empty tarball and runs it in a mount namespace
+    # of its own (`unshare --mount`, which needs root) where the build's
+    # overlay is mounted; `$unshare_bind_mounts` binds the overlay onto
+    # sbuild's empty folder as the chroot's root first, before ccache's and
+    # the apt cache's folders, in every command sbuild runs in the chroot.
+    # The namespace, and the mount with it, ends with sbuild, also when it is
+    # killed.
+    #
+    # The lower layer belongs to the chroot's users (the subordinate ids
+    # sbuild maps them to): it is unpacked in a user namespace with sbuild's
+    # mapping, and the sbuild user and group are added as sbuild would add
+    # them (its --root useradd runs on the empty folder, not the overlay).
+    class ChrootLayers
+      # where sbuild sees the overlay bound
+      ROOT = "/"
+      # device nodes cannot be made in a user namespace (sbuild skips them too)
+      DEVICES = %w[urandom random full null console zero tty ptmx].map { |name| "--exclude=./dev/#{name}" }.freeze
+
+      # [first, count] of +user+'s range in +file+ (/etc/subuid, /etc/subgid).
+      def self.range(file, user)
+        first = BuildUserFolder.first_subordinate(file, user)
+        count = File.foreach(file).find { |entry| entry.split(":").first == user }.split(":")[2].to_i
+        [first, count]
+      end
+
+      # +tarball+: the target's chroot tarball (Chroot); +folder+: where the
+      # layers go (this run's, removed at its end); +uids+, +gids+: [first,
+      # count] of the subordinate ids sbuild maps the chroot's users to.
+      def initialize(tarball, folder, uids:, gids:)
+        @tarball = tarball
+        @folder = folder
+        @uids = uids
+        @gids = gids
+        @lock = Mutex.new
+        @lower = nil
+        check_path(folder)
+      end
+
+      # The empty tarball sbuild is given (it unpacks it into its folder).
+      def empty_tarball
+        path = File.join(@folder, "empty.tar")
+        # two zero blocks: an archive of nothing
+        File.binwrite(path, "\0" * 1024) unless File.file?(path)
+        path
+      end
+
+      # Unpacks the lower layer unless done: +tool+ runs the unpacking for
+      # +source+ into +log+. Returns its folder.
+      def lower(tool, source, log)
+        @lock.synchronize do
+          @lower ||= unpack(tool, source, log)
+        end
+      end
+
+      # Runs the block with a new layer over the lower one: [upper, work,
+      # merged] folders; removes them when the block ends.
+      def layer
+        dir = File.join(@folder, "layer-#{SecureRandom.hex(6)}")
+        upper, work, merged = %w[upper work merged].map { |name| File.join(dir, name) }
+        FileUtils.mkdir_p([upper, work, merged], mode: 0o755)
+        # the root of the chroot is the upper layer's folder
+        File.chown(@uids.first, @gids.first, upper)
+        yield upper, work, merged
+      ensure
+        FileUtils.rm_rf(dir) if dir
+      end
+
+      # The command that runs +command+ (sbuild's) with the overlay of
+      # +upper+, +work+ and +merged+ over +lower+ mounted.
+      def wrap(command, lower, upper, work, merged)
+        ["unshare", "--mount", "--propagation", "private", "--", "sh", "-c",
+         'mount -t overlay overlay -o "lowerdir=$1,upperdir=$2,workdir=$3" "$4" && shift 4 && exec "$@"',
+         "sh", lower, upper, work, merged, *command]
+      end
+
+      # The line of sbuild's configuration binding +merged+ as the chroot's
+      # root, before every other bind mount.
+      def config_line(merged)
+        "unshift @{$unshare_bind_mounts}, { directory => #{BuildUserFolder.perl(merged)}, mountpoint => '#{ROOT}' };"
+      end
+
+      private
+
+      def unpack(tool, source, log)
+        lower = File.join(@folder, "lower")
+        FileUtils.rm_rf(lower)
+        Dir.mkdir(lower, 0o755)
+        File.chown(@uids.first, @gids.first, lower)
+        # the tarball is read here (root's cache is closed to the chroot's users)
+        tool.run(source, unpack_command(lower), log: log, stdin: @tarball, name: "unpacking the chroot")
+        lower
+      end
+
+      def unpack_command(lower)
+        add_user = "{ grep -q '^sbuild:' \"$1/etc/group\" || groupadd --root \"$1\" --system sbuild; } && " \
+                   "{ grep -q '^sbuild:' \"$1/etc/passwd\" || useradd --root \"$1\" --system --home-dir " \
+                   "/var/lib/sbuild --no-create-home --shell /bin/bash --gid sbuild --comment 'Debian source " \
+                   "builder,,,' sbuild; }"
+        ["unshare", "--user", "--map-users=#{@uids[0]},0,#{@uids[1]}", "--map-groups=#{@gids[0]},0,#{@gids[1]}",
+         "--setuid", "0", "--setgid", "0", "--", "sh", "-c",
+         "zstd -dc | tar -C \"$1\" -x --numeric-owner #{DEVICES.join(' ')} && #{add_user}", "sh", lower]
+      end
+
+      # overlayfs's options are separated by commas and colons
+      def check_path(path)
+        return unless path.match?(/[,:\\]/)
+
+        raise BuildError, "cannot lay a chroot out in #{path}: overlayfs takes no ',', ':' or '\\' in its folders"
+      end
+    end
+  end
+end
