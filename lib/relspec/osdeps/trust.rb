@@ -1,21 +1,20 @@
 # frozen_string_literal: true
 
+require_relative "../debian_name"
+
 module Relspec
   module Osdeps
     # What the package set accepts from a repository before it reaches apt
     # (run as root), /etc/apt or a workspace's environment. relspec checks it
     # when it writes a package set, and the package set's init.rb checks it
     # again when it reads one (the folder is a git checkout anybody with
-    # push access can change). Plain Ruby without requires: init.rb loads
-    # it in users' workspaces, where relspec is not installed.
+    # push access can change). Plain Ruby, requiring only files the package
+    # set ships: init.rb loads it in users' workspaces, where relspec is not
+    # installed.
     #
     # Each check returns nil when the value is fine, else why it is not
     # (text for a message that names the file and the entry).
     module Trust
-      # Debian policy 5.6.1: lowercase letters, digits, + - . ; at least two
-      # characters, starting with a letter or digit. Nothing apt or a shell
-      # could read as an option or syntax (a leading -, spaces, =, quotes).
-      DEBIAN_NAME = /\A[a-z0-9][a-z0-9+.-]+\z/
       # Release names (ReleaseSpec::Names::RELEASE): they become file names.
       RELEASE_NAME = /\A[a-z][a-z0-9.+-]*\z/
       # A plain http(s) URL: host, optional port, path segments; nothing that
@@ -45,10 +44,9 @@ module Relspec
 
       module_function
 
+      # Debian names (DebianName): they reach `apt-get install` as root.
       def debian_name(name)
-        return nil if name.is_a?(String) && DEBIAN_NAME.match?(name)
-
-        "#{name.inspect} is not a Debian package name (lowercase letters, digits, + - ., not starting with - or .)"
+        DebianName.problem(name)
       end
 
       def release_name(name)

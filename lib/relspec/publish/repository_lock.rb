@@ -1,7 +1,7 @@
 # frozen_string_literal: true
 
-require "fileutils"
 require_relative "../error"
+require_relative "../file_lock"
 
 module Relspec
   module Publish
@@ -18,24 +18,10 @@ module Relspec
 
       # Yields once the lock is held; +waiting+ is called once (with what
       # holds it) if another publisher holds it.
-      def hold(repository, waiting: nil)
-        file = open_lock_file(repository)
-        begin
-          unless file.flock(File::LOCK_EX | File::LOCK_NB)
-            waiting&.call("another relspec publish")
-            file.flock(File::LOCK_EX)
-          end
-          yield
-        ensure
-          file.close
-        end
-      end
-
-      def open_lock_file(repository)
-        FileUtils.mkdir_p(repository)
-        File.open(File.join(repository, FILE_NAME), File::RDWR | File::CREAT, 0o644)
-      rescue SystemCallError => e
-        raise PublishError, "cannot lock the repository #{repository}: #{e.message.sub(/ @ .*/, '')}"
+      def hold(repository, waiting: nil, &block)
+        FileLock.hold(repository, FILE_NAME, busy: ->(_file) { waiting&.call("another relspec publish") }, &block)
+      rescue FileLock::Unavailable => e
+        raise PublishError, "cannot lock the repository #{repository}: #{e.message}"
       end
     end
   end
