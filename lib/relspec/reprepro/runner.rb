@@ -4,18 +4,20 @@ require "open3"
 require_relative "../error"
 
 module Relspec
-  module Publish
-    # reprepro on one base directory (its pool), optionally with its
-    # configuration, database and dists/ elsewhere (+dirs+: conf:, db:,
-    # dists:, a Transaction's copy; pool files that become unreferenced
-    # there are kept, since the live database may still list them). A
-    # failure is one PublishError naming the command, its exit status and
-    # its output.
-    class Reprepro
+  module Reprepro
+    # reprepro on one base directory (its pool), for publish and mirror,
+    # optionally with its configuration, database and dists/ elsewhere
+    # (+dirs+: conf:, db:, dists:, publish's Transaction copy; pool files
+    # that become unreferenced there are kept, since the live database may
+    # still list them). A failure is one +error+ (the stage's kind:
+    # PublishError for publish) naming the command, its exit status and the
+    # end of its output.
+    class Runner
       OUTPUT_LINES = 30 # lines of a failed command's output kept in the message
 
-      def initialize(base, dirs = nil)
+      def initialize(base, dirs = nil, error: ToolError)
         @base = base
+        @error = error
         @options = []
         return unless dirs
 
@@ -27,17 +29,28 @@ module Relspec
         run("includedsc", codename, dsc)
       end
 
-      def includedeb(codename, debs)
-        run("includedeb", codename, *debs)
+      # +arch+: only the .debs of that architecture (and all).
+      def includedeb(codename, debs, arch: nil)
+        run("includedeb", codename, *debs, options: arch ? ["-A", arch] : [])
+      end
+
+      def remove(codename, names, arch:)
+        run("remove", codename, *names, options: ["-A", arch])
       end
 
       # The source packages +codename+ holds, as "source version" lines.
       def sources(codename)
-        run("--architecture", "source", "--list-format", "${package} ${version}\n", "list", codename).lines.map(&:chomp)
+        run("list", codename, options: ["--architecture", "source", "--list-format", "${package} ${version}\n"])
+          .lines.map(&:chomp)
       end
 
       def export
         run("export")
+      end
+
+      # Forgets what the configuration no longer names (a dropped codename).
+      def clearvanished
+        run("clearvanished", options: ["--delete"])
       end
 
       # The pool files the database holds ("pool/main/…" paths): what was
@@ -50,14 +63,15 @@ module Relspec
         run("deleteunreferenced")
       end
 
-      def run(*args)
-        output, status = Open3.capture2e("reprepro", "--basedir", @base, *@options, *args)
+      # reprepro's +command+ with its +args+; +options+ go before it.
+      def run(command, *args, options: [])
+        output, status = Open3.capture2e("reprepro", "--basedir", @base, *@options, *options, command, *args)
         return output if status.success?
 
-        raise PublishError, "reprepro #{args.first} failed (exit status #{status.exitstatus}) in #{@base}:\n" \
-                            "#{output.lines.last(OUTPUT_LINES).join.rstrip}"
+        raise @error, "reprepro #{command} failed (exit status #{status.exitstatus}) in #{@base}:\n" \
+                      "#{output.lines.last(OUTPUT_LINES).join.rstrip}"
       rescue SystemCallError => e
-        raise PublishError, "cannot run reprepro: #{e.message.sub(/ @ .*/, '')} (install the reprepro package)"
+        raise @error, "cannot run reprepro: #{e.message.sub(/ @ .*/, '')} (install the reprepro package)"
       end
     end
   end

@@ -1,18 +1,23 @@
 # frozen_string_literal: true
 
-require "spec_helper"
-require "relspec/publish/repository_config"
-require "relspec/plan/target"
+require_relative "../unit_helper"
+require "relspec/reprepro/config"
+require "relspec/target"
 
-RSpec.describe Relspec::Publish::RepositoryConfig do
+# conf/ of a release's repository (publish) and of a field mirror: one
+# distribution per codename, written only when it changes.
+RSpec.describe Relspec::Reprepro::Config do
   def targets(*names)
-    names.map { |name| Relspec::Plan::Target.parse(name) }
+    names.map { |name| Relspec::Target.parse(name) }
+  end
+
+  def release(sign_with: nil, names: ["focal/arm64", "bookworm/amd64", "focal/amd64"])
+    described_class.new(label: "demo", description: "demo for %<codename>s", targets: targets(*names), source: true,
+                        sign_with: sign_with)
   end
 
   it "has one distribution per codename with its architectures and source, signed when asked" do
-    config = described_class.new(release: "demo", targets: targets("focal/arm64", "bookworm/amd64", "focal/amd64"),
-                                 sign_with: "0123ABCD")
-    expect(config.distributions).to eq(<<~CONF)
+    expect(release(sign_with: "0123ABCD").distributions).to eq(<<~CONF)
       Codename: bookworm
       Suite: bookworm
       Label: demo
@@ -29,16 +34,24 @@ RSpec.describe Relspec::Publish::RepositoryConfig do
       Description: demo for focal
       SignWith: 0123ABCD
     CONF
-    expect(config.options).to eq("waitforlock #{described_class::WAIT_FOR_LOCK}\n")
-    expect(described_class.new(release: "demo", targets: targets("bookworm/amd64")).distributions).not_to include("SignWith")
+    expect(release.options).to eq("waitforlock #{described_class::WAIT_FOR_LOCK}\n")
+    expect(release(names: ["bookworm/amd64"]).distributions).not_to include("SignWith")
   end
 
-  it "accepts sign_with in a spec's own repository only" do
-    with_specs("own" => "release: own\ntargets: { bookworm: [amd64] }\nrepository: { path: /srv/own, keyring: k.gpg, sign_with: ABCD }\n",
-               "ext" => "release: ext\nparent: x\nexternal: { x: { path: /srv/x, trusted: true, sign_with: ABCD } }\n") do |dir|
-      expect(Relspec::ReleaseSpec::SpecFile.load(File.join(dir, "own.yml")).diagnostics).to be_empty
-      messages = Relspec::ReleaseSpec::SpecFile.load(File.join(dir, "ext.yml")).diagnostics.map(&:to_s)
-      expect(messages.join).to include("sign_with")
+  it "leaves source out for a mirror's binaries" do
+    mirror = described_class.new(label: "relspec mirror", description: "mirror from %<codename>s", targets: targets("bookworm/arm64"),
+                                 source: false)
+    expect(mirror.distributions).to include("Label: relspec mirror\nArchitectures: arm64\n", "Description: mirror from bookworm\n")
+  end
+
+  it "writes conf/ and says whether it changed" do
+    Dir.mktmpdir do |dir|
+      conf = File.join(dir, "conf")
+      expect(release.write(conf)).to be(true)
+      expect(release.write(conf)).to be(false)
+      expect(File.read(File.join(conf, "options"))).to eq("waitforlock 30\n")
+      expect(release(sign_with: "AB").write(conf)).to be(true)
+      expect(File.read(File.join(conf, "distributions"))).to include("SignWith: AB")
     end
   end
 end
