@@ -27,7 +27,7 @@ module Relspec
       def call(release:, arch:, os:, data:, blacklist:, index:, trusted:, keyring:, output:, unmatched: nil,
                differs: nil)
         os = OperatingSystem.parse(os)
-        mapping = resolve(ReleaseData.new(data).merged(release, arch), os)
+        mapping = ReleaseData.new(data).resolved(release, arch, os)
         entries = blacklist ? BlacklistFile.load(blacklist) : []
         indices = IndexSources.load(index, codename: codename(os), arch: arch, trusted: trusted, keyring: keyring)
         selection = Selection.new(mapping, indices, entries)
@@ -43,11 +43,7 @@ module Relspec
       def codename(os)
         os.versions.find { |version| version.match?(/\A[a-z]+\z/) && version != "default" }
       end
-
-      def resolve(entries, os)
-        entries.filter_map { |package, entry| (deb = os.resolve(entry)) && [package, deb] }.to_h
-      end
-      private_class_method :codename, :resolve
+      private_class_method :codename
     end
   end
 end

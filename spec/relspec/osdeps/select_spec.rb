@@ -151,11 +151,32 @@ RSpec.describe "relspec osdeps select" do
   end
 end
 
+# The names a user's system resolves to reach autoproj's `apt-get install`
+# (as root): read as the package set's init.rb reads them (Osdeps::Reader),
+# where select once wrote whatever the file said.
+RSpec.describe "relspec osdeps select with an osdeps file naming no Debian package" do
+  it "refuses it, naming the file and the package, and writes nothing" do
+    Dir.mktmpdir("relspec-select-names") do |dir|
+      File.write(File.join(dir, "releases.yml"), "rel: ~\n")
+      File.write(File.join(dir, "rel-amd64.yml"), "base/ok:\n  ubuntu,debian:\n    18.04,bionic: rock-ok\n" \
+                                                  "base/evil:\n  ubuntu,debian:\n    18.04,bionic: \"-oAPT::Update=x\"\n" \
+                                                  "gem:\n  gem: not_a_debian_name\n")
+      run = relspec("osdeps", "select", "--release", "rel", "--arch", "amd64", "--os", "ubuntu,debian:18.04,bionic",
+                    "--data", dir, "--output", File.join(dir, "out"))
+      expect(run.exit_code).to eq(1)
+      expect(run.stderr).to include("rel-amd64.yml: error[osdeps-file]: base/evil: \"-oAPT::Update=x\" is not a Debian package name")
+      expect(run.stderr).not_to match(/\.rb:\d+:in /)
+      expect(File.exist?(File.join(dir, "out"))).to be(false)
+    end
+  end
+end
+
 RSpec.describe "relspec osdeps select with a malformed releases.yml" do
   {
-    "- rel\n" => "releases.yml must map release names to entries",
-    "rel: base-rel\n" => "the entry of rel must be a mapping",
-    "rel: { depends_on: ../../etc }\n" => 'rel depends_on "../../etc", which is not a release name'
+    "- rel\n" => "releases.yml: error[release-index]: is not a mapping of releases",
+    "rel: base-rel\n" => 'releases.yml: error[release-index]: "rel": is not a mapping',
+    "rel: { depends_on: ../../etc }\n" => 'releases.yml: error[release-index]: "rel": "../../etc" is not a release name',
+    "base: { depends_on: rel }\nrel: { depends_on: base }\n" => "releases.yml: error[release-index]: depends_on cycle through rel"
   }.each do |index, message|
     it "refuses #{index.strip.inspect} with a clear message" do
       Dir.mktmpdir("relspec-releases-yml") do |dir|
