@@ -81,6 +81,7 @@ module Relspec
       option :index, type: :array, default: [], desc: "Packages files or repository URLs for reverse dependencies"
       option :trusted, type: :boolean, default: false, desc: "Read repository URLs without checking signatures"
       option :keyring, type: :string, desc: "Keyring verifying repository URLs"
+      option :timeout, type: :numeric, default: 10, desc: "HTTP timeout in seconds (repository URLs)"
       option :output, type: :string, default: ".", desc: "Where to write rock-osdeps.osdeps and rock-osdeps.inactive"
       def select
         require_relative "select_command"

@@ -17,7 +17,7 @@ module Relspec
         result = Osdeps.select(
           release: release, arch: @options[:arch], os: @options[:os], data: @options[:data],
           blacklist: @options[:blacklist], index: @options[:index], trusted: @options[:trusted],
-          keyring: @options[:keyring], output: @options[:output],
+          keyring: @options[:keyring], output: @options[:output], timeout: @options[:timeout] || 10,
           differs: lambda do |entry, note|
             @err.puts("#{entry.location}: warning[blacklist-reading]: #{entry.pattern.source.inspect}: #{note}")
           end,

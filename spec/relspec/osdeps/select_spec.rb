@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require "spec_helper"
+require_relative "../../support/http_server"
 
 # `relspec osdeps select` on a real reprepro repository, through the CLI.
 RSpec.describe "relspec osdeps select" do
@@ -148,6 +149,32 @@ RSpec.describe "relspec osdeps select" do
     expect(osdeps["orogen"]).to eq("default" => "rock-master-20.06-ruby-orogen")
     expect(osdeps["tools/orocos.rb"]).to eq("default" => "rock-master-20.06-ruby-tools-orocos.rb")
     expect(osdeps.size).to be > 300
+  end
+end
+
+# --timeout reaches the repository URLs select reads (Http::Download, as
+# every download of relspec): a server that never answers costs three waits
+# of --timeout per file asked (InRelease, then Release), not the default's
+# 10 s each (a minute).
+RSpec.describe "relspec osdeps select --timeout" do
+  it "gives up on a repository URL that does not answer within it, three times" do
+    Dir.mktmpdir("relspec-select-timeout") do |dir|
+      server = HttpServer.new(dir)
+      server.fail(%r{/dists/}, :stall, seconds: 4)
+      File.write(File.join(dir, "releases.yml"), "rel: ~\n")
+      File.write(File.join(dir, "rel-amd64.yml"), "base/ok:\n  ubuntu,debian:\n    18.04,bionic: rock-ok\n")
+      started = Process.clock_gettime(Process::CLOCK_MONOTONIC)
+      run = relspec("osdeps", "select", "--release", "rel", "--arch", "amd64", "--os", "ubuntu,debian:18.04,bionic",
+                    "--data", dir, "--index", "#{server.url}/repo", "--trusted", "--timeout", "1", "--output", File.join(dir, "out"))
+      elapsed = Process.clock_gettime(Process::CLOCK_MONOTONIC) - started
+      expect(run.exit_code).to eq(1), run.stderr
+      expect(run.stderr).to include("cannot read the index #{server.url}/repo: #{server.url}/repo/dists/bionic/InRelease: " \
+                                    "no answer within 1 s per read (after 3 attempts")
+      expect(elapsed).to be < 30
+      expect(File.exist?(File.join(dir, "out"))).to be(false)
+    ensure
+      server&.stop
+    end
   end
 end
 
