@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require_relative "../debian_name"
+require_relative "../release_specs/names"
 
 module Relspec
   module Osdeps
@@ -15,8 +16,8 @@ module Relspec
     # Each check returns nil when the value is fine, else why it is not
     # (text for a message that names the file and the entry).
     module Trust
-      # Release names (ReleaseSpec::Names::RELEASE): they become file names.
-      RELEASE_NAME = /\A[a-z][a-z0-9.+-]*\z/
+      # Release names: they become file names.
+      RELEASE_NAME = ReleaseSpec::Names::RELEASE
       # A plain http(s) URL: host, optional port, path segments; nothing that
       # ends an apt line or adds an option to it (spaces, newlines, [ ]).
       URL = %r{\Ahttps?://[A-Za-z0-9.-]+(:[0-9]{1,5})?(/[A-Za-z0-9._~%+-]+)*/?\z}
