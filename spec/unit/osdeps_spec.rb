@@ -6,14 +6,7 @@ require "relspec/osdeps"
 # The `relspec osdeps …` use cases, on spec files and data folders (render
 # plans, and package-set reads published repositories: their scenario specs
 # are spec/relspec/osdeps/render_spec.rb and spec/hostile/package_set_spec.rb).
-RSpec.describe Relspec::Osdeps do
-  around do |example|
-    Dir.mktmpdir do |dir|
-      @dir = dir
-      example.run
-    end
-  end
-
+RSpec.describe Relspec::Osdeps, :tmpdir do
   def spec(name, text)
     FileUtils.mkdir_p(File.join(@dir, "specs"))
     File.write(File.join(@dir, "specs", "#{name}.yml"),

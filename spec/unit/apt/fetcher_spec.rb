@@ -6,14 +6,10 @@ require_relative "../../support/http_server"
 
 # A repository's files from a folder or over http(s) (Http::Download): a
 # missing file is nil, anything else that cannot be read one Failure.
-RSpec.describe Relspec::Apt::Fetcher do
-  around do |example|
-    Dir.mktmpdir do |dir|
-      @dir = dir
-      FileUtils.mkdir_p(File.join(dir, "dists"))
-      File.write(File.join(dir, "dists", "Release"), "Origin: x\n")
-      example.run
-    end
+RSpec.describe Relspec::Apt::Fetcher, :tmpdir do
+  before do
+    FileUtils.mkdir_p(File.join(@dir, "dists"))
+    File.write(File.join(@dir, "dists", "Release"), "Origin: x\n")
   end
 
   it "reads a folder's regular files, a missing one as nil, and refuses others and oversized ones" do

@@ -6,16 +6,13 @@ require_relative "../../support/http_server"
 
 # relspec's one download (apt indices, gems, archive imports) against a real
 # server on 127.0.0.1 (a thread): redirects, retries, the timeout.
-RSpec.describe Relspec::Http::Download do
+RSpec.describe Relspec::Http::Download, :tmpdir do
   around do |example|
-    Dir.mktmpdir do |dir|
-      @dir = dir
-      File.write(File.join(dir, "file"), "bytes")
-      @server = HttpServer.new(dir)
-      example.run
-    ensure
-      @server.stop
-    end
+    File.write(File.join(@dir, "file"), "bytes")
+    @server = HttpServer.new(@dir)
+    example.run
+  ensure
+    @server&.stop
   end
 
   let(:pauses) { [] }

@@ -5,14 +5,7 @@ require "relspec/osdeps/release_data"
 require "relspec/osdeps/operating_system"
 
 # `osdeps select`'s reading of a data folder, through Osdeps::Reader.
-RSpec.describe Relspec::Osdeps::ReleaseData do
-  around do |example|
-    Dir.mktmpdir do |dir|
-      @dir = dir
-      example.run
-    end
-  end
-
+RSpec.describe Relspec::Osdeps::ReleaseData, :tmpdir do
   let(:bionic) { Relspec::Osdeps::OperatingSystem.new(%w[ubuntu debian], %w[18.04 bionic]) }
 
   def write(name, text)

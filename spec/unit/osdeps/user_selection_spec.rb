@@ -6,19 +6,15 @@ require "relspec/osdeps/user_selection"
 
 # `osdeps select` as a whole: read, select, write both files; nothing
 # written when the input is refused.
-RSpec.describe Relspec::Osdeps::UserSelection do
-  around do |example|
-    Dir.mktmpdir do |dir|
-      @dir = dir
-      File.write(File.join(dir, "releases.yml"), "rel: ~\n")
-      File.write(File.join(dir, "rel-amd64.yml"),
-                 "a:\n  debian:\n    12,bookworm: rock-a\nb:\n  debian:\n    12,bookworm: rock-b\n")
-      Zlib::GzipWriter.open(File.join(dir, "Packages.gz")) do |gz|
-        gz.write("Package: rock-a\nVersion: 1\nArchitecture: amd64\n\nPackage: rock-b\nVersion: 1\nArchitecture: amd64\nDepends: rock-a\n")
-      end
-      File.write(File.join(dir, "deb_blacklist.yml"), "- a\n- gui/none\n")
-      example.run
+RSpec.describe Relspec::Osdeps::UserSelection, :tmpdir do
+  before do
+    File.write(File.join(@dir, "releases.yml"), "rel: ~\n")
+    File.write(File.join(@dir, "rel-amd64.yml"),
+               "a:\n  debian:\n    12,bookworm: rock-a\nb:\n  debian:\n    12,bookworm: rock-b\n")
+    Zlib::GzipWriter.open(File.join(@dir, "Packages.gz")) do |gz|
+      gz.write("Package: rock-a\nVersion: 1\nArchitecture: amd64\n\nPackage: rock-b\nVersion: 1\nArchitecture: amd64\nDepends: rock-a\n")
     end
+    File.write(File.join(@dir, "deb_blacklist.yml"), "- a\n- gui/none\n")
   end
 
   def select(**overrides)

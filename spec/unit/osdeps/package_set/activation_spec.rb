@@ -9,18 +9,14 @@ require "relspec/osdeps/package_set/activation"
 # Osdeps::Reader), each refusal naming the file. A real Autoproj::Workspace
 # on a temporary folder; the system is given (this_system asks dpkg, a child
 # process). The whole run, apt included, is package_set_init_spec.rb's.
-RSpec.describe RelspecPackageSet::Activation do
-  around do |example|
-    Dir.mktmpdir do |dir|
-      @dir = dir
-      @data = File.join(dir, "set", "data")
-      FileUtils.mkdir_p([@data, File.join(dir, "ws", "autoproj"), File.join(dir, "ws", ".autoproj")])
-      File.write(File.join(@data, "releases.yml"), "default: { repo_url: http://h }\nbase: ~\nr: { depends_on: base }\n")
-      osdeps("base", "base/cmake" => "rock-base-cmake", "base/old" => "rock-base-old")
-      osdeps("r", "base/cmake" => "rock-r-cmake")
-      File.write(File.join(dir, "ws", "autoproj", "relspec.yml"), "release: r\n")
-      example.run
-    end
+RSpec.describe RelspecPackageSet::Activation, :tmpdir do
+  before do
+    @data = File.join(@dir, "set", "data")
+    FileUtils.mkdir_p([@data, File.join(@dir, "ws", "autoproj"), File.join(@dir, "ws", ".autoproj")])
+    File.write(File.join(@data, "releases.yml"), "default: { repo_url: http://h }\nbase: ~\nr: { depends_on: base }\n")
+    osdeps("base", "base/cmake" => "rock-base-cmake", "base/old" => "rock-base-old")
+    osdeps("r", "base/cmake" => "rock-r-cmake")
+    File.write(File.join(@dir, "ws", "autoproj", "relspec.yml"), "release: r\n")
   end
 
   def osdeps(release, packages)
