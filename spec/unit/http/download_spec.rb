@@ -41,7 +41,7 @@ RSpec.describe Relspec::Http::Download, :tmpdir do
   end
 
   it "waits the timeout for each answer, not more" do
-    @server.fail(%r{\A/file\z}, :stall, seconds: 3)
+    @server.fail(%r{\A/file\z}, :stall, seconds: 1)
     started = Process.clock_gettime(Process::CLOCK_MONOTONIC)
     expect { described_class.new(timeout: 0.5, retries: 1).get(URI("#{@server.url}/file")) { :never } }
       .to raise_error(described_class::Failed, %r{/file: no answer within 0\.5 s per read \(after 1 attempt,})
