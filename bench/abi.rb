@@ -17,7 +17,7 @@ require "open3"
 require "tmpdir"
 require_relative "timing"
 $LOAD_PATH.unshift(File.expand_path("../lib", __dir__))
-require "relspec/abi/dumper"
+require "relspec/builder/abi_dumper"
 require "relspec/abi/comparison"
 
 CLASSES = Integer(ARGV.fetch(0, "400"))
@@ -62,8 +62,8 @@ Dir.mktmpdir("relspec-bench-abi") do |dir|
   end
   dump_time = Timing.seconds do
     dumps.each do |xml, debug, library|
-      run!(*Relspec::Abi::Dumper::ABIDW, "--debug-info-dir", debug, "--out-file", xml, library)
-      Relspec::Abi::Dumper.compress(xml, "#{xml}.gz")
+      run!(*Relspec::Builder::AbiDumper::ABIDW, "--debug-info-dir", debug, "--out-file", xml, library)
+      Relspec::Builder::AbiDumper.compress(xml, "#{xml}.gz")
     end
   end
   verdict = nil

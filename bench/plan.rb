@@ -6,7 +6,7 @@
 # The ancestors' repositories are written directly in apt's format
 # (dists/<codename>/Release with SHA256 lines, main/binary-<arch>/Packages.gz),
 # without .deb files: the planner reads only indices. The catalog is a
-# snapshot. Printed: in-process Plan.compute wall and CPU time (median), the
+# snapshot. Printed: in-process Plan.run wall and CPU time (median), the
 # time per package and its growth against the first size, and index reads
 # per plan. Targets: < 1 s at 400, per-package growth <= 1.3x (issue 22).
 #
@@ -90,7 +90,7 @@ SIZES.each do |count|
     result = nil
     runs = Array.new(RUNS) do
       cpu = Process.clock_gettime(Process::CLOCK_PROCESS_CPUTIME_ID)
-      wall = Timing.seconds { result = Relspec::Plan.compute(spec, cache_dir: nil) }
+      wall = Timing.seconds { result = Relspec::Plan.run(spec, cache_dir: nil) }
       [wall, Process.clock_gettime(Process::CLOCK_PROCESS_CPUTIME_ID) - cpu]
     end
     wall = runs.map(&:first).sort[RUNS / 2]

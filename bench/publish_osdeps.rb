@@ -5,7 +5,7 @@
 # ancestors' indices, the repository's indices read back, the locked
 # decisions they hold (Publish::LockedRelease, Publish::HeldPackages) —
 # against its peer, what publish did before: a whole new plan (workspace
-# load, indices, decisions; Plan.compute) filtered to what is not a build.
+# load, indices, decisions; Plan.run) filtered to what is not a build.
 # Both render the files in memory and must agree byte for byte (the bench
 # stops otherwise). Run from a project root after bin/demo:
 #
@@ -32,7 +32,7 @@ from_lock = lambda do
   Relspec::Osdeps::Renderer.render(listing.targets, distributions)
 end
 from_plan = lambda do
-  planned = Relspec::Plan.compute(SPEC)
+  planned = Relspec::Plan.run(SPEC)
   present = Relspec::Osdeps::RepositoryPresence.new.to_proc
   Relspec::Osdeps::Renderer.render(planned.plan.targets, distributions, present: present)
 end

@@ -6,8 +6,7 @@ require_relative "error"
 require_relative "target"
 require_relative "output_tree"
 require_relative "target_build"
-require_relative "builder/repositories"
-require_relative "abi/dumper"
+require_relative "builder/abi_dumper"
 require_relative "abi/published_dumps"
 require_relative "abi/comparison"
 require_relative "abi/report"
@@ -49,12 +48,25 @@ module Relspec
       release = resolution.effective.release
       lineage = resolution.lineage
       targets = builds.map do |build|
-        repositories = Builder::Repositories.of(lineage, build.target.codename)
+        repositories = published_by(lineage)
         counterparts = counterparts(repositories, release, against)
         Report::TargetReport.new(target: build.target, entries: compare(own(build, repositories.first, release),
                                                                         counterparts, build.target).freeze).freeze
       end
       Report.new(release: release, targets: targets.freeze).freeze
+    end
+
+    # Where a release publishes: +name+, +uri+ (its repository's location).
+    Publisher = Struct.new(:name, :uri, keyword_init: true)
+
+    # The members of +lineage+ (ReleaseSpec::Lineage) that publish
+    # somewhere, own release first: [Publisher]. The ABI reads their
+    # dumps, not their packages, so no suite or keyring is needed.
+    def self.published_by(lineage)
+      lineage.filter_map do |member|
+        uri = member.repository&.location
+        uri && Publisher.new(name: member.name, uri: uri).freeze
+      end
     end
 
     # The release's own dumps: its last build's (at the planned versions),
@@ -63,7 +75,7 @@ module Relspec
       if build.built?
         return build.results.built.flat_map do |record|
           record.files.filter_map do |file|
-            library = Dumper.library_of(file.name)
+            library = Builder::AbiDumper.library_of(file.name)
             library && Side.new(package: record.package, library: library, file: File.join(build.dir, file.name),
                                 sha256: file.sha256).freeze
           end

@@ -15,7 +15,7 @@ require_relative "builder/scheduler"
 require_relative "builder/tool"
 require_relative "builder/unlinked_path"
 require_relative "builder/staged_results"
-require_relative "abi/dumper"
+require_relative "builder/abi_dumper"
 require_relative "builder/host_backend"
 require_relative "builder/sbuild_backend"
 require_relative "builder/slurm/cluster"
@@ -213,7 +213,7 @@ module Relspec
       # (docs/abi.md); recorded with the produced files.
       def abi_dumps(request, files)
         run = ->(command, log:) { @tool.run(request.source, command, log: log) }
-        Abi::Dumper.new(run).dump(files.grep(/\.deb\z/), request.output_dir, log: request.log).map(&:path)
+        AbiDumper.new(run).dump(files.grep(/\.deb\z/), request.output_dir, log: request.log).map(&:path)
       end
 
       def debs_of(dir, record)

@@ -10,6 +10,8 @@ require_relative "output_tree"
 require_relative "project"
 require_relative "yaml/writer"
 require_relative "builder/build_plan"
+require_relative "catalog/archive_import"
+require_relative "cache_dir"
 require_relative "atomic_file"
 require_relative "temporaries"
 
@@ -50,7 +52,7 @@ module Relspec
 
     def run
       cache_writer = CacheWriter.new # one note for every cache the run cannot write
-      @planned = Plan.compute(@path, timeout: @timeout, cache_writer: cache_writer, discard_lock: @discard_lock)
+      @planned = Plan.run(@path, timeout: @timeout, cache_writer: cache_writer, discard_lock: @discard_lock)
       @on_planned&.call(@planned)
       @effective = @planned.effective
       @tree = OutputTree.new(@out, @effective.release)
@@ -114,10 +116,16 @@ module Relspec
       package = input.package
       Debian::SourcePackage.new(
         input: input, version: decision.version, digest: work.digest, checkout: checkout_of(package),
-        overlay: work.overlay, orig_cache: @tree.orig_cache,
+        overlay: work.overlay, orig_cache: @tree.orig_cache, archives: archives,
         substitutions: { "@RELSPEC_INSTALL_DIR@" => input.install_dir, "@RELSPEC_RELEASE@" => @effective.release,
                          "@RELSPEC_PACKAGE@" => input.deb_name }
       )
+    end
+
+    # The archives of archive imports, fetched once into the user's cache;
+    # compile's --timeout reaches their download.
+    def archives
+      @archives ||= Catalog::ArchiveImport.new(cache: CacheDir.for("archives"), timeout: @timeout)
     end
 
     def checkout_of(package)

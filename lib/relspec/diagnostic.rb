@@ -1,5 +1,7 @@
 # frozen_string_literal: true
 
+require_relative "printable"
+
 module Relspec
   # One finding about a user's input: where, which rule, what went wrong and
   # what to do about it. The core returns these as data; only the CLI turns
@@ -17,9 +19,11 @@ module Relspec
       severity == :error
     end
 
+    # Escaped for a terminal: the location's file may come from the command
+    # line, and escaped text stays as it is (Printable keeps backslashes).
     def to_s
-      text = "#{location}: #{severity}[#{rule}]: #{message}"
-      hint ? "#{text}\n  hint: #{hint}" : text
+      text = "#{Printable.text(location)}: #{severity}[#{rule}]: #{Printable.lines(message)}"
+      hint ? "#{text}\n  hint: #{Printable.lines(hint)}" : text
     end
 
     def to_h

@@ -8,7 +8,8 @@ module Relspec
   # publish). The kernel drops it when the holder dies, so a killed run
   # never leaves a stale lock behind.
   module FileLock
-    # The lock file cannot be made or opened (+path+, the system's reason).
+    # The lock file cannot be made or opened (+path+: the lock file, or its
+    # folder when that is no folder; the reason).
     class Unavailable < StandardError
       attr_reader :path
 
@@ -17,6 +18,9 @@ module Relspec
         @path = path
       end
     end
+
+    # Why +dir+ cannot hold a lock file when it, or a folder above it, is a file.
+    NOT_A_FOLDER = "it, or a folder above it, is a file, not a folder"
 
     module_function
 
@@ -42,6 +46,8 @@ module Relspec
     def open_file(dir, name)
       FileUtils.mkdir_p(dir)
       File.open(File.join(dir, name), File::RDWR | File::CREAT, 0o644)
+    rescue Errno::EEXIST, Errno::ENOTDIR # mkdir_p's bare "File exists" where a file is in the way
+      raise Unavailable.new(dir, NOT_A_FOLDER)
     rescue SystemCallError => e
       raise Unavailable.new(File.join(dir, name), e.message.sub(/ @ .*/, ""))
     end

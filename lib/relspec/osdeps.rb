@@ -63,7 +63,7 @@ module Relspec
       require_relative "release_specs"
       require_relative "osdeps/indexed_release"
       library = ReleaseSpec::Library.new(specs)
-      raise Error, "#{specs}/ holds no release spec" if library.names.empty?
+      raise InvalidOption, "#{specs}/ holds no release spec" if library.names.empty?
 
       library.paths.map { |path| IndexedRelease.from_effective(ReleaseSpec.resolve(path).effective) }
     end

@@ -15,6 +15,7 @@ require_relative "plan/lock_parser"
 require_relative "plan/lock_generator"
 require_relative "plan/settlement"
 require_relative "plan/gem_check"
+require_relative "plan/gem_archives"
 require_relative "debian/overlay"
 require_relative "plan/facts"
 require_relative "plan/result"
@@ -24,9 +25,11 @@ module Relspec
   # build or published, with causes; recorded in releases/<r>/lock.yml.
   module Plan
     # Plans the release of the spec at +path+: Plan.decide over Plan.read.
-    # Returns a Result.
-    def self.compute(path, timeout: 10, cache_dir: Apt::Cache.default_dir, cache_writer: CacheWriter.new,
-                     catalog_cache: Catalog::Cache.new(writer: cache_writer), discard_lock: false)
+    # Returns a Result. The use case's entry, shaped as Compile.run,
+    # Builder.run, Publish.run, Availability.run and Diff.run: what the CLI
+    # calls.
+    def self.run(path, timeout: 10, cache_dir: Apt::Cache.default_dir, cache_writer: CacheWriter.new,
+                 catalog_cache: Catalog::Cache.new(writer: cache_writer), discard_lock: false)
       decide(read(path, timeout: timeout, cache_dir: cache_dir, cache_writer: cache_writer, catalog_cache: catalog_cache,
                         discard_lock: discard_lock))
     end
@@ -49,10 +52,8 @@ module Relspec
       cache = Apt::Cache.new(cache_dir, writer: cache_writer)
       fetcher_options = { timeout: timeout }
       targets = Target.all(effective)
-      gem_distribution = nil
-      gem_archives = lambda do
-        gem_distribution ||= read_distribution(resolution, Debian::Naming::DISTRIBUTION_GEMS, targets, fetcher_options, cache)
-        targets.to_h { |target| [target.to_s, gem_distribution.index(target)] }
+      gem_archives = GemArchives.new(targets) do |wanted|
+        read_distribution(resolution, wanted, targets, fetcher_options, cache)
       end
       release_catalog = Catalog::ReleaseCatalog.load(resolution, cache: catalog_cache, gem_fetch: gem_fetch, timeout: timeout,
                                                                  gem_archives: gem_archives, locked_gems: locked_gems(previous))
@@ -60,8 +61,7 @@ module Relspec
       inventory = Inventory.read(ancestors, targets)
       own = read_own(resolution, targets, fetcher_options, cache)
       GemCheck.call(previous, release_catalog, resolution)
-      distribution = gem_distribution || read_distribution(resolution, wanted_of(release_catalog), targets, fetcher_options,
-                                                           cache)
+      distribution = gem_archives.distribution(wanted_of(release_catalog))
       root = project_root(path)
       Facts.new(resolution: resolution, release_catalog: release_catalog, ancestors: ancestors, inventory: inventory,
                 distribution: distribution, own: own, previous: previous, lock_path: lock_path, project_root: root,
@@ -93,12 +93,6 @@ module Relspec
                  lock_read: !facts.previous.nil?, project_root: facts.project_root)
     end
 
-    # The use case's entry, shaped as Compile.run, Builder.run, Publish.run,
-    # Availability.run and Diff.run: what the CLI calls.
-    def self.run(path, **options)
-      compute(path, **options)
-    end
-
     # The folder above the spec's folder (where releases/ and overlays/ are),
     # as the user would write it.
     def self.project_root(path)
@@ -119,10 +113,25 @@ module Relspec
     def self.settle(plan, facts)
       inputs = DebianInputs.new(effective: facts.resolution.effective, ancestors: facts.ancestors,
                                 release_catalog: facts.release_catalog)
-      versioning = Versioning.new(history: facts.previous&.history || History.empty, own: facts.own)
-      targets, work = Settlement.new(catalog: facts.release_catalog.catalog, inputs: inputs, versioning: versioning,
-                                     overlays: facts.overlays).call(plan.targets)
-      [plan.with_targets(targets), work]
+      history = facts.previous&.history || History.empty
+      versioning = Versioning.new(history: history, own: facts.own)
+      rising = RisingUpstream.new(history: history, own: facts.own)
+      targets, work, raised = Settlement.new(catalog: facts.release_catalog.catalog, inputs: inputs, versioning: versioning,
+                                             overlays: facts.overlays, rising: rising).call(plan.targets)
+      [plan.with_targets(targets, warnings: raised_warnings(raised, facts.resolution.spec_file)), work]
+    end
+
+    # One warning per archive import whose version was raised (RisingUpstream),
+    # listing the targets.
+    def self.raised_warnings(raised, spec_file)
+      raised.group_by { |one| [one.package, one.archive, one.above, one.upstream] }.sort.map do |(package, archive, above, upstream), all|
+        targets = all.map { |one| one.target.to_s }.uniq.sort.join(", ")
+        Diagnostic.warning("archive-time-back",
+                           "#{package}: its archive's time gives #{archive}, below #{above}, which the release already " \
+                           "gave it (#{targets}); versioned #{upstream}, so that apt takes it as an upgrade",
+                           location: spec_file.location(["workspace"]),
+                           hint: "an older archive is served again: check the package set's url, or leave it so")
+      end
     end
 
     # The gem versions the lock recorded (from the .gem's URL: the lock's

@@ -3,6 +3,7 @@
 require "spec_helper"
 require "yaml"
 require "digest"
+require "time"
 require_relative "../support/build_release"
 
 # Concurrency and faults of build and publish (issue 24, item 4), with real
@@ -97,16 +98,22 @@ RSpec.describe "relspec build and publish under concurrency and faults", order: 
     expect_published
   end
 
-  it "refuses a second build and a publish of a target while a build of it runs, naming the build" do
+  # Issue 46, case 16: the refusal says since when the holder runs.
+  it "refuses a second build and a publish of a target while a build of it runs, naming the build and since when" do
+    started = Time.now.utc - 3 # /proc says the boot time in whole seconds, the message too
     pid = spawn_relspec("build", spec, "--out", "out", "--backend", "host", chdir: @dir)
     slow_log = File.join(@release.target_dir, "logs", "#{@release.source('base/zslow')}.log")
     wait_for("the first build reaching base/zslow") { File.exist?(slow_log) }
-    busy = "out/conc/bookworm-amd64: relspec build (pid #{pid}) is using it; run again when it has finished"
+    holder = Regexp.escape("out/conc/bookworm-amd64: relspec build (pid #{pid}, since ")
+    finished = Regexp.escape(" UTC) is using it; run again when it has finished")
+    busy = /\Arelspec: error: cannot (build|publish) #{holder}(\d{4}-\d\d-\d\d \d\d:\d\d:\d\d)#{finished}\n\z/
 
     second = relspec("build", spec, "--out", "out", "--backend", "host", chdir: @dir)
-    expect([second.exit_code, second.stderr]).to eq([1, "relspec: error: cannot build #{busy}\n"])
     publish = relspec("publish", spec, "--out", "out", chdir: @dir)
-    expect([publish.exit_code, publish.stderr]).to eq([1, "relspec: error: cannot publish #{busy}\n"])
+    expect([second.exit_code, publish.exit_code]).to eq([1, 1])
+    expect([second.stderr[busy, 1], publish.stderr[busy, 1]]).to eq(%w[build publish]), "#{second.stderr}#{publish.stderr}"
+    since = Time.strptime("#{publish.stderr[busy, 2]} UTC", "%Y-%m-%d %H:%M:%S %Z")
+    expect(since).to be_between(started, Time.now.utc)
     expect(File.exist?(repository)).to be(false) # refused before touching the repository
 
     expect(finish_relspec(pid).status).to be_success
@@ -480,16 +487,24 @@ RSpec.describe "relspec build and publish under concurrency and faults", order: 
   ensure
     FileUtils.rm_rf(File.dirname(outside))
   end
-  it "case 6: refuses a ccache folder that is relative, a link or someone else's, before any build" do
+  # Issue 46, case 15: an empty folder of another user was given to the
+  # build user (chown to the subordinate uid, mode 0700) without a word.
+  it "case 6: refuses a ccache folder that is relative, a link or someone else's (empty or not), before any build" do
     outside = Dir.mktmpdir("relspec-outside")
     File.write(File.join(outside, "precious.o"), "mine\n")
     link = File.join(@dir, "ccache-link")
     File.symlink(outside, link)
+    foreign = Dir.mktmpdir("relspec-foreign") # empty, another user's
+    File.chmod(0o755, foreign)
+    File.chown(4242, 4242, foreign)
+    build_uid = File.read("/etc/subuid")[/^root:(\d+):/, 1]
     {
       "cache" => "RELSPEC_CCACHE=cache: not an absolute folder (or \"off\")",
       link => "ccache folder #{link} is not a folder (RELSPEC_CCACHE chooses another, \"off\" none)",
       outside => "ccache folder #{outside} belongs to uid #{Process.uid}, not to the uid sbuild's build user has " \
-                 "here (#{File.read('/etc/subuid')[/^root:(\d+):/, 1]}): chown -R "
+                 "here (#{build_uid}): chown -R ",
+      foreign => "ccache folder #{foreign} belongs to uid 4242, not to the uid sbuild's build user has here " \
+                 "(#{build_uid}): chown -R "
     }.each do |folder, message|
       run = relspec("build", spec, "--out", "out", "--backend", "sbuild", "--rebuild", chdir: @dir,
                                                                                        env: { "RELSPEC_CCACHE" => folder })
@@ -497,7 +512,9 @@ RSpec.describe "relspec build and publish under concurrency and faults", order: 
       expect(run.stderr).to start_with("relspec: error: #{message}")
     end
     expect([Dir.children(outside), File.stat(outside).uid]).to eq([["precious.o"], Process.uid])
+    expect([Dir.children(foreign), File.stat(foreign).uid, File.stat(foreign).mode & 0o777]).to eq([[], 4242, 0o755])
   ensure
     FileUtils.rm_rf(outside)
+    FileUtils.rm_rf(foreign) if foreign
   end
 end

@@ -2,6 +2,7 @@
 
 require "spec_helper"
 require_relative "../support/committed_releases"
+require_relative "../support/demo_child_plan"
 require "fileutils"
 
 # `relspec report` over a build's logs it did not make and a report folder
@@ -47,6 +48,7 @@ RSpec.describe "relspec report over hostile logs and folders" do
           log: logs/#{source}.log
           reason: "#{source}: dpkg-buildpackage failed"
     YAML
+    DemoChildPlan.write(target)
   end
 
   def report_run

@@ -4,6 +4,7 @@ require "digest"
 require "fileutils"
 require "zlib"
 require_relative "committed_releases"
+require_relative "demo_child_plan"
 
 # The shipped demo's specs and locks in a folder of the test's, with
 # demo-child's last build holding one ABI dump (base/types's type registry,
@@ -31,14 +32,7 @@ module DemoChildDumps
           files:
             - { name: results/rock-demo-child-base-types/base.tlb.abi.xml.gz, sha256: #{dump}, size: 1 }
     YAML
-    # the plan it was built from (its versions are what the build's records are taken at)
-    File.write(File.join(target, "plan.yml"), <<~YAML)
-      release: demo-child
-      target: bookworm/amd64
-      builds:
-        - { package: base/types, source: rock-demo-child-base-types, version: 2.0-1~bookworm,
-            dsc: rock-demo-child-base-types/rock-demo-child-base-types_2.0-1~bookworm.dsc, build_depends: [] }
-    YAML
+    DemoChildPlan.write(target)
   end
 
   # demo-base's repository in +root+ publishing the registry +registry+

@@ -52,7 +52,7 @@ RSpec.describe Relspec::FileLock do
     Dir.mktmpdir do |dir|
       File.write(File.join(dir, "file"), "")
       expect { hold(File.join(dir, "file", "sub")) { nil } }
-        .to raise_error(described_class::Unavailable) { |e| expect([e.path, e.message]).to eq([File.join(dir, "file", "sub", "x.lock"), "File exists"]) }
+        .to raise_error(described_class::Unavailable) { |e| expect([e.path, e.message]).to eq([File.join(dir, "file", "sub"), described_class::NOT_A_FOLDER]) }
     end
   end
 end

@@ -29,7 +29,7 @@ RSpec.describe Relspec::Osdeps, :tmpdir do
       .to raise_error(Relspec::InvalidOption, '--repo-url must be an http(s) URL, not "file:///srv"')
     FileUtils.mkdir_p(File.join(@dir, "empty"))
     expect { described_class.package_set(specs: File.join(@dir, "empty"), out: File.join(@dir, "set")) }
-      .to raise_error(Relspec::Error, "#{File.join(@dir, 'empty')}/ holds no release spec")
+      .to raise_error(Relspec::InvalidOption, "#{File.join(@dir, 'empty')}/ holds no release spec")
     expect(Dir.exist?(File.join(@dir, "releases")) || Dir.exist?(File.join(@dir, "set"))).to be(false)
   end
 

@@ -14,4 +14,10 @@ RSpec.describe Relspec::Printable do
     expect(described_class.text("plain")).to eq("plain")
     expect(described_class.text(nil)).to eq("")
   end
+
+  it "keeps the line breaks of text of several lines and escapes the rest of each line" do
+    expect(described_class.lines("reprepro failed:\n\e[2Jcannot\tread\r\n")).to eq("reprepro failed:\n\\e[2Jcannot\tread\\r\n")
+    expect(described_class.lines("already\\e escaped")).to eq("already\\e escaped")
+    expect(described_class.lines("caf\xE9\n\e".b)).to eq("caf\\xE9\n\\e") # not UTF-8: no ArgumentError from split
+  end
 end

@@ -87,3 +87,30 @@ module SpecFiles
 end
 
 RSpec.configure { |config| config.include SpecFiles, file_path: %r{spec/unit/release_specs/} }
+
+require "relspec/catalog/package"
+require "relspec/debian/build_input"
+
+# The input of one package's debian/ (Debian::BuildInput), in memory: a
+# catalog package of +build_type+ whose fields +package+ overrides, and the
+# input's own fields from +fields+.
+module BuildInputs
+  def build_input(build_type: "cmake", package: {}, **fields)
+    catalog_package = Relspec::Catalog::Package.new(
+      name: "pkg", package_set: "set", build_type: build_type, commit_time: "2021-03-04T05:06:07Z", source_dir: "src/pkg",
+      vcs: Relspec::Catalog::Vcs.from_h("type" => "git", "url" => "https://example.org/pkg.git", "commit" => "a" * 40),
+      **package
+    )
+    Relspec::Debian::BuildInput.new(
+      package: catalog_package, deb_name: "rock-r-pkg", upstream: "0.1", codename: "bookworm", release: "r",
+      maintainer: "M <m@example.org>", install_dir: "/opt/rock/r/rock-r-pkg", dependencies: [], apt: [], gems: [],
+      gem: nil, **fields
+    )
+  end
+
+  def dependency(deb_name, install_dir)
+    Relspec::Debian::BuildInput::Dependency.new(deb_name: deb_name, version: "1.0-1", install_dir: install_dir)
+  end
+end
+
+RSpec.configure { |config| config.include BuildInputs, file_path: %r{spec/unit/debian/} }

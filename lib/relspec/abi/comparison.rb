@@ -5,7 +5,7 @@ require "tmpdir"
 require "zlib"
 require_relative "../error"
 require_relative "verdict"
-require_relative "dumper"
+require_relative "../builder/abi_dumper"
 require_relative "type_registry"
 
 module Relspec
@@ -29,7 +29,7 @@ module Relspec
         Dir.mktmpdir("relspec-abidiff") do |dir|
           old_xml = unpack(old, File.join(dir, "old.xml"))
           new_xml = unpack(new, File.join(dir, "new.xml"))
-          return registries(old_xml, old, new_xml, new) if Dumper.registry?(Dumper.library_of(old).to_s)
+          return registries(old_xml, old, new_xml, new) if Builder::AbiDumper.registry?(Builder::AbiDumper.library_of(old).to_s)
 
           output, error, status = Open3.capture3("abidiff", "--no-show-locs", old_xml, new_xml)
           code = status.exitstatus

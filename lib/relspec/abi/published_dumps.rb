@@ -9,7 +9,7 @@ require_relative "../error"
 require_relative "../unlinked_path"
 require_relative "../yaml/located_document"
 require_relative "../yaml/field_reader"
-require_relative "dumper"
+require_relative "../builder/abi_dumper"
 
 module Relspec
   module Abi
@@ -62,7 +62,7 @@ module Relspec
         records.each do |record|
           known.reject! { |(source, _), _| source == record.source }
           record.files.each do |file|
-            library = Dumper.library_of(file.name) or next
+            library = Builder::AbiDumper.library_of(file.name) or next
             relative = File.join(record.source, File.basename(file.name))
             FileUtils.mkdir_p(File.join(dir, record.source))
             AtomicFile.write(File.join(dir, relative), File.binread(File.join(target_dir, file.name)))
@@ -86,7 +86,7 @@ module Relspec
       def self.check(repository, target, records)
         base = File.join("abi", target.dir_name)
         dumps = records.flat_map do |record|
-          record.files.select { |file| Dumper.library_of(file.name) }
+          record.files.select { |file| Builder::AbiDumper.library_of(file.name) }
                 .map { |file| File.join(base, record.source, File.basename(file.name)) }
         end
         why = "publish writes the ABI dumps only inside #{dir(repository, target)} and never through a link; " \
@@ -135,9 +135,9 @@ module Relspec
           @fields.fail_at(at, "#{@fields.describe(at)} must be a mapping") unless row.is_a?(Hash)
           @fields.known_keys(row, at, ENTRY_KEYS)
           library = @fields.text(row, at + ["library"])
-          @fields.fail_at(at + ["library"], "#{library.inspect} is not a shared library or type registry name") unless Dumper.dumped?(library)
+          @fields.fail_at(at + ["library"], "#{library.inspect} is not a shared library or type registry name") unless Builder::AbiDumper.dumped?(library)
           file = @fields.plain_path(row, at + ["file"])
-          @fields.fail_at(at + ["file"], "#{file.inspect} is not a dump of #{library}") unless Dumper.library_of(file) == library
+          @fields.fail_at(at + ["file"], "#{file.inspect} is not a dump of #{library}") unless Builder::AbiDumper.library_of(file) == library
           sha256 = @fields.text(row, at + ["sha256"])
           @fields.fail_at(at + ["sha256"], "sha256 must be 64 lowercase hex digits") unless sha256.match?(SHA256)
           Entry.new(package: @fields.text(row, at + ["package"]), source: @fields.text(row, at + ["source"]),

@@ -1,7 +1,7 @@
 # frozen_string_literal: true
 
 require "digest"
-require_relative "dumper"
+require_relative "../builder/abi_dumper"
 require_relative "published_dumps"
 
 module Relspec
@@ -26,7 +26,7 @@ module Relspec
       def self.of(repository, target, records, problem:)
         dir = PublishedDumps.dir(repository, target)
         vouched = records.flat_map do |record|
-          record.files.select { |file| Dumper.library_of(file.name) }
+          record.files.select { |file| Builder::AbiDumper.library_of(file.name) }
                 .map { |file| [[record.source, File.basename(file.name), file.sha256], record] }
         end.to_h
         kept, left_out = present(dir).partition do |path|
@@ -36,7 +36,7 @@ module Relspec
           sha256 = Digest::SHA256.file(path).hexdigest
           record = vouched.fetch(key(path, sha256))
           PublishedDumps::Entry.new(package: record.package, source: record.source, version: record.version,
-                                    library: Dumper.library_of(path), file: path, sha256: sha256).freeze
+                                    library: Builder::AbiDumper.library_of(path), file: path, sha256: sha256).freeze
         end
         new(dumps: PublishedDumps.new(dir, entries), left_out: left_out.freeze, problem: problem).freeze
       end
@@ -44,7 +44,7 @@ module Relspec
       # The dump files below +dir+: plain files one folder down (a link is
       # never followed, and never listed).
       def self.present(dir)
-        Dir.glob(File.join(dir, "*", "*#{Dumper::SUFFIX}")).sort.select do |path|
+        Dir.glob(File.join(dir, "*", "*#{Builder::AbiDumper::SUFFIX}")).sort.select do |path|
           File.file?(path) && !File.symlink?(path) && !File.symlink?(File.dirname(path))
         end
       end

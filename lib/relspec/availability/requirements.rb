@@ -8,7 +8,7 @@ module Relspec
     # What the release asks of each target distribution: the OS relations
     # of the Build-Depends and Depends that relspec writes into the
     # debian/control of every package it builds there (Debian::ControlRelations,
-    # the same lists as DebianDir, without the relations to Rock packages and
+    # the same lists as Debian::Control, without the relations to Rock packages and
     # without substitution variables), with the packages that need each one.
     class Requirements
       # One comma-separated group of a relationship field: satisfied when any

@@ -112,9 +112,10 @@ module Relspec
           next if @ready
 
           FileUtils.mkdir_p(File.dirname(@dir), mode: 0o755)
-          Dir.mkdir(@dir, 0o700) unless File.exist?(@dir) || File.symlink?(@dir)
+          created = !File.exist?(@dir) && !File.symlink?(@dir)
+          Dir.mkdir(@dir, 0o700) if created
           check_folder
-          File.chown(*owner, @dir) if File.stat(@dir).uid != owner.first && Dir.empty?(@dir)
+          File.chown(*owner, @dir) if handed_over?(created)
           check_owner
           hand_back_contents
           # nobody but the build user writes (or reads) it
@@ -124,6 +125,15 @@ module Relspec
       end
 
       private
+
+      # An empty folder is given to the build user only when it is this
+      # run's or the user's own: one of another user (RELSPEC_CCACHE naming
+      # it by mistake, or to have root hand it over) stays theirs and is
+      # refused by check_owner, as a foreign folder that holds files is.
+      def handed_over?(created)
+        stat = File.stat(@dir)
+        stat.uid != owner.first && Dir.empty?(@dir) && (created || stat.uid == Process.uid)
+      end
 
       def check_folder
         return if File.directory?(@dir) && !File.symlink?(@dir)

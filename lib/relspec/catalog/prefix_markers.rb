@@ -12,7 +12,7 @@ module Relspec
     # value read meanwhile is written either with autoproj's prefix
     # (#restore) or with a reference to the package (#references:
     # "${prefix:external/sisl}", which the release replaces with that
-    # package's release prefix, Debian::DebianDir).
+    # package's release prefix, Plan::DebianInputs).
     class PrefixMarkers
       # Where the markers live: below the workspace's prefix, in a folder
       # no autoproj layout makes.

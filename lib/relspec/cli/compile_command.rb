@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require_relative "../compile"
+require_relative "../printable"
 require_relative "discarded_lock"
 
 module Relspec
@@ -29,9 +30,10 @@ module Relspec
         if result.written.empty? && !result.lock_changed && result.osdeps_written.zero?
           @io.puts("#{result.release}: nothing changed (#{result.unchanged.size} source packages up to date)")
         else
-          result.written.each { |dir| @io.puts("wrote #{dir}") }
+          result.written.each { |dir| @io.puts("wrote #{Printable.text(dir)}") } # --out is the command line's
           @io.puts("#{result.release}: #{result.written.size} source packages written, #{result.unchanged.size} unchanged, " \
-                   "#{result.published.size} already published; #{result.lock_changed ? 'wrote' : 'kept'} #{result.lock_path}")
+                   "#{result.published.size} already published; #{result.lock_changed ? 'wrote' : 'kept'} " \
+                   "#{Printable.text(result.lock_path)}")
           note_unchecked(result.unchecked)
         end
         0

@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require_relative "../error"
+require_relative "../printable"
 require_relative "interrupt_watch"
 
 module Relspec
@@ -46,22 +47,28 @@ module Relspec
         stderr.puts(e.diagnostics.map(&:to_s))
         stderr.puts(Summary.of(e.diagnostics))
         e.status_code
+      rescue InvalidOption => e
+        raise if debug
+
+        # All of it is the command line's: a newline in a value is no line of its own.
+        stderr.puts("relspec: error: #{Printable.text(e.message)}")
+        e.status_code
       rescue Error => e
         raise if debug
 
-        stderr.puts("relspec: error: #{e.message}")
+        stderr.puts("relspec: error: #{Printable.lines(e.message)}")
         e.status_code
       rescue Errno::EPIPE # a reader that stopped (`relspec show | head`)
         0
       rescue SystemCallError => e
         raise if debug
 
-        stderr.puts("relspec: error: #{e.message.sub(/ @ \w+/, '')}")
+        stderr.puts("relspec: error: #{Printable.lines(e.message.sub(/ @ \w+/, ''))}")
         EXIT_USER_ERROR
       rescue StandardError, ScriptError => e
         raise if debug
 
-        stderr.puts("relspec: internal error: #{e.class}: #{e.message}")
+        stderr.puts("relspec: internal error: #{e.class}: #{Printable.lines(e.message)}")
         stderr.puts("This is a bug in relspec; run again with --debug to see where it happened.")
         EXIT_BUG
       end

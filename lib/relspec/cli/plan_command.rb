@@ -3,6 +3,7 @@
 require_relative "../plan"
 require_relative "../plan/report"
 require_relative "discarded_lock"
+require_relative "../printable"
 
 module Relspec
   module CLI
@@ -47,7 +48,8 @@ module Relspec
 
       def write_lock(result)
         changed = result.write_lock
-        @err.puts(changed ? "wrote #{result.lock_path}" : "#{result.lock_path} is up to date")
+        path = Printable.text(result.lock_path) # below the spec's folder, as the command line named it
+        @err.puts(changed ? "wrote #{path}" : "#{path} is up to date")
       end
     end
   end

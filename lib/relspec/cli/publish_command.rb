@@ -19,14 +19,14 @@ module Relspec
 
       def call
         result = Publish.run(@path, out: @out, target: @target, timeout: @timeout,
-                                    waiting: ->(what) { @err.puts("waiting for #{what} to finish…") })
+                                    waiting: ->(what) { @err.puts("waiting for #{Printable.text(what)} to finish…") })
         @err.puts(Publish::StaleRepreproLock.note(result.stale_lock)) if result.stale_lock
         note_recovered(result)
         result.abi_rebuilt.each { |rebuilt| note_rebuilt(rebuilt) }
         result.targets.each { |target| report(target) }
-        @io.puts("#{result.release}: #{result.repository}: #{result.osdeps_written.zero? ? 'osdeps unchanged' : "wrote #{result.osdeps_written} osdeps files"}")
+        @io.puts("#{result.release}: #{Printable.text(result.repository)}: #{result.osdeps_written.zero? ? 'osdeps unchanged' : "wrote #{result.osdeps_written} osdeps files"}")
         note_missing(result.osdeps_missing)
-        @io.puts("status page: #{result.report}")
+        @io.puts("status page: #{Printable.text(result.report)}")
         0
       end
 

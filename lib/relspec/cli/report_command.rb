@@ -1,5 +1,6 @@
 # frozen_string_literal: true
 
+require_relative "../printable"
 require_relative "../report"
 
 module Relspec
@@ -15,7 +16,7 @@ module Relspec
       end
 
       def call
-        @io.puts("wrote #{Report.run(@path, out: @out, format: @format)}")
+        @io.puts("wrote #{Printable.text(Report.run(@path, out: @out, format: @format))}")
         0
       end
     end

@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require_relative "../osdeps"
+require_relative "../printable"
 
 module Relspec
   module CLI
@@ -27,7 +28,7 @@ module Relspec
           end
         )
         selection = result.selection
-        @err.puts("#{selection.active.size} packages active, #{selection.inactive.size} disabled (#{result.path})")
+        @err.puts("#{selection.active.size} packages active, #{selection.inactive.size} disabled (#{Printable.text(result.path)})")
       end
     end
   end

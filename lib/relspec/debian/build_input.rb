@@ -15,18 +15,33 @@ module Relspec
     # build-only tools of its whole dependency closure
     # (ControlRelations.build_only), sorted; +closure_environment+: the
     # variables the package sets' environment settings of that closure name
-    # (beyond the ones every env.sh sets), sorted; +prefixes+: the prefix on the
-    # target of each package the package's defines name
-    # (Catalog::PrefixMarkers), by autoproj name; one without a decision on
-    # the target is missing. Immutable.
+    # (beyond the ones every env.sh sets), sorted; +defines+: the package
+    # set's CMake defines of the package ({name => value}, in its order) as
+    # the plan resolved them for the target: a reference to another
+    # package's prefix is that package's prefix on the target, a define
+    # naming a package without a decision there is left out;
+    # +extension_task+: the checked rake task that compiles a Ruby
+    # package's extension (Catalog::RubyExtension), or nil. Immutable.
     BuildInput = Struct.new(:package, :deb_name, :upstream, :codename, :release, :maintainer, :install_dir,
                             :debhelper_compat, :dependencies, :apt, :gems, :gem, :ruby_dirs, :closure_tools,
-                            :closure_environment, :prefixes, keyword_init: true) do
+                            :closure_environment, :defines, :extension_task, keyword_init: true) do
       def initialize(debhelper_compat: BuildInput::DEFAULT_COMPAT, gem: nil, ruby_dirs: [], closure_tools: [],
-                     closure_environment: [], prefixes: {}, **fields)
+                     closure_environment: [], defines: {}, extension_task: nil, **fields)
         super(debhelper_compat: debhelper_compat, gem: gem, ruby_dirs: ruby_dirs, closure_tools: closure_tools,
-              closure_environment: closure_environment.dup.freeze, prefixes: prefixes.dup.freeze, **fields)
+              closure_environment: closure_environment.dup.freeze, defines: defines.dup.freeze,
+              extension_task: extension_task, **fields)
         freeze
+      end
+
+      # The prefixes of the dependencies built by Rock releases (the
+      # distribution's own packages live in the system).
+      def dependency_dirs
+        dependencies.filter_map(&:install_dir)
+      end
+
+      # The file name of the release's gem archive, nil for other packages.
+      def gem_file
+        gem && "#{gem.name}-#{gem.version}.gem"
       end
     end
 

@@ -8,7 +8,7 @@ module Relspec
     # The relationship fields of a generated debian/control: Build-Depends
     # and Depends of one package, from its build type, its OS dependencies
     # (apt names and distribution gems) and the relations to other Rock
-    # packages. DebianDir writes them; the availability check (relspec check)
+    # packages. Control writes them; the availability check (relspec check)
     # asks for the same lists without the Rock packages, so that what is
     # checked is exactly what the builder will ask apt for.
     module ControlRelations

@@ -81,6 +81,7 @@ module Relspec
         safe = [new, old].compact.reject { |path| path.split("/").include?("..") }
         refuse(patch, "names no file inside the package's folder (#{old_line.strip})") if safe.empty?
         target = safe.find { |path| exists.call(path) } || safe.first
+        missing!(patch, [old, new].compact.uniq) if old && !exists.call(target)
         ["--- #{old ? "a/#{target}" : '/dev/null'}\n", "+++ #{new ? "b/#{target}" : '/dev/null'}\n"]
       end
 
@@ -97,10 +98,20 @@ module Relspec
         parts.join("/")
       end
 
-      def refuse(patch, problem)
+      # A file the patch changes that the tree does not have at the patch's
+      # level: dpkg-source would stop at "can't find file to patch" (a
+      # patch made with `diff -ru a/ b/` needs level 1, autobuild's default
+      # is 0). A file created by the patch (--- /dev/null) is not looked for.
+      def missing!(patch, names)
+        refuse(patch, "changes #{names.join(' or ')}, which the package's source does not have at level " \
+                      "#{patch.level} (patch -p#{patch.level})",
+               hint: "fix the patch's file names, or its level in the package set (`patches: [[file, level]]`; " \
+                     "autobuild's default level is 0, a patch made by `diff -ru a/ b/` needs 1)")
+      end
+
+      def refuse(patch, problem, hint: "fix the patch or its level in the package set")
         raise InvalidInput, [Diagnostic.error("package-set-patch", "package set patch #{patch.path} #{problem}",
-                                              location: Location.file_only(patch.path),
-                                              hint: "fix the patch or its level in the package set")]
+                                              location: Location.file_only(patch.path), hint: hint)]
       end
     end
   end

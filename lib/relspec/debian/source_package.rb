@@ -11,8 +11,6 @@ require_relative "package_set_patch"
 require_relative "emitted"
 require_relative "orig_cache"
 require_relative "naming"
-require_relative "../catalog/archive_import"
-require_relative "../cache_dir"
 require_relative "../atomic_file"
 require_relative "../temporaries"
 require_relative "../diagnostic"
@@ -39,8 +37,10 @@ module Relspec
       # +digest+: the digest of debian/ it was settled from; +checkout+: the
       # package's source folder; +overlay+: its Overlay; +orig_cache+: folder
       # where orig tarballs are made once per upstream version and shared by
-      # every target.
-      def initialize(input:, version:, digest:, checkout:, overlay:, orig_cache:, substitutions:)
+      # every target; +archives+: where an archive import's archive is found
+      # (+archives.path_of(package)+: Catalog::ArchiveImport, passed in by
+      # compile).
+      def initialize(input:, version:, digest:, checkout:, overlay:, orig_cache:, substitutions:, archives:)
         @input = input
         @version = version
         @digest = digest
@@ -48,6 +48,7 @@ module Relspec
         @overlay = overlay
         @orig_cache = orig_cache
         @substitutions = substitutions
+        @archives = archives
         @repaired = []
       end
 
@@ -155,7 +156,7 @@ module Relspec
       # single top folder, if it has one. tar refuses members that leave
       # the folder (absolute or ../ paths).
       def with_archive_tree
-        archive = Catalog::ArchiveImport.new(cache: CacheDir.for("archives"), timeout: 10).path_of(@input.package)
+        archive = @archives.path_of(@input.package)
         Dir.mktmpdir("relspec-archive") do |dir|
           run(["tar", "-xf", archive, "-C", dir, "--no-same-owner", "--no-same-permissions"], dir)
           children = Dir.children(dir)

@@ -19,7 +19,7 @@ module Relspec
         @root = root
         @ref = ref
         _, status = git("rev-parse", "--verify", "--quiet", "#{ref}^{commit}")
-        raise Error, "#{ref} is not a commit of the git repository at #{root}" unless status.success?
+        raise InvalidOption, "#{ref} is not a commit of the git repository at #{root}" unless status.success?
       end
 
       # The file's text at the ref, or nil when it did not exist there.

@@ -6,6 +6,7 @@ require_relative "../apt/repository"
 require_relative "../apt/package_index"
 require_relative "../diagnostic"
 require_relative "../error"
+require_relative "../printable"
 
 module Relspec
   module Osdeps
@@ -24,7 +25,7 @@ module Relspec
             [Apt::PackageIndex.parse(read_file(source))]
           end
         rescue Apt::Repository::Error, Apt::Deb822::ParseError, Apt::PackageIndex::Invalid, ToolError, Zlib::Error, SystemCallError => e
-          raise InvalidInput, [Diagnostic.error("index", "cannot read the index #{source}: #{e.message}",
+          raise InvalidInput, [Diagnostic.error("index", "cannot read the index #{Printable.text(source)}: #{Printable.text(e.message)}",
                                                 location: Location.file_only(source))]
         end
       end

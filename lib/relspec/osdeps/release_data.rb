@@ -3,6 +3,7 @@
 require_relative "../yaml/located_document"
 require_relative "../diagnostic"
 require_relative "../error"
+require_relative "../printable"
 require_relative "reader"
 
 module Relspec
@@ -48,7 +49,7 @@ module Relspec
         unless File.file?(path)
           return nil unless required
 
-          raise InvalidInput, [problem("missing-osdeps", "no osdeps file #{path}", path)]
+          raise InvalidInput, [problem("missing-osdeps", "no osdeps file #{Printable.text(path)}", path)]
         end
 
         document = Yaml::LocatedDocument.load(path)

@@ -6,6 +6,7 @@ require_relative "blacklist_file"
 require_relative "index_sources"
 require_relative "selection"
 require_relative "files"
+require_relative "trust"
 
 module Relspec
   module Osdeps
@@ -27,6 +28,7 @@ module Relspec
       # saying how), then +unmatched+ with each entry that matches no package.
       def call(release:, arch:, os:, data:, blacklist:, index:, trusted:, keyring:, output:, timeout: 10,
                unmatched: nil, differs: nil)
+        check_names(release, arch, os)
         os = OperatingSystem.parse(os)
         mapping = ReleaseData.new(data).resolved(release, arch, os)
         entries = blacklist ? BlacklistFile.load(blacklist) : []
@@ -39,6 +41,17 @@ module Relspec
         end
         selection.unmatched.each { |entry| unmatched&.call(entry) }
         Result.new(selection: selection, path: Files.write_selection(output, selection))
+      end
+
+      # --release and --arch become file names: refused unless they are
+      # names (a newline or ../ in them is no release of the data folder);
+      # --os goes into messages and the files written.
+      def check_names(release, arch, os)
+        raise InvalidOption, "--os #{os.inspect} holds control characters" if os.to_s.match?(/\p{Cc}/)
+
+        problem = Trust.release_name(release)
+        raise InvalidOption, "--release #{problem}" if problem
+        raise InvalidOption, "--arch #{arch.inspect} is not a Debian architecture name" unless arch.to_s.match?(/\A[a-z0-9][a-z0-9-]*\z/)
       end
 
       # The user's codename, to read repository URLs with.

@@ -4,6 +4,7 @@ require_relative "../debian/control_relations"
 require_relative "../debian/build_input"
 require_relative "../release_specs/values/prefixes"
 require_relative "../catalog/prefix_markers"
+require_relative "../catalog/ruby_extension"
 
 module Relspec
   module Plan
@@ -40,8 +41,23 @@ module Relspec
           gem: @release_catalog.gems[package.name],
           closure_tools: closure_tools(package, target, decisions),
           closure_environment: closure_environment(package, target, decisions),
-          prefixes: prefixes_of(package, decisions)
+          defines: defines_of(package, decisions), extension_task: Catalog::RubyExtension.checked(package)
         )
+      end
+
+      # +package+'s CMake defines (pkg.define) for the target: a reference
+      # to another package's prefix (Catalog::PrefixMarkers) becomes the
+      # prefix the release gives that package there; a define naming a
+      # package without a decision on the target is left out, as if the
+      # package set had not seen the package.
+      def defines_of(package, decisions)
+        prefixes = prefixes_of(package, decisions)
+        package.defines.filter_map do |name, value|
+          names = value.scan(Catalog::PrefixMarkers::REFERENCE).flatten
+          next unless names.all? { |reference| prefixes.key?(reference) }
+
+          [name, value.gsub(Catalog::PrefixMarkers::REFERENCE) { prefixes.fetch(Regexp.last_match(1)) }]
+        end.to_h
       end
 
       # The prefixes on the target of the packages +package+'s defines

@@ -28,6 +28,11 @@ module Relspec
         @builds.dig(target.to_s, package, upstream)
       end
 
+      # Every upstream version recorded for +package+ on +target+.
+      def upstreams(target, package)
+        @builds.dig(target.to_s, package)&.keys || []
+      end
+
       # A history that also records +version+ (a PackageVersion) of
       # +package+ made from +debian_digest+.
       def with(target, package, version, debian_digest)

@@ -4,11 +4,11 @@ require_relative "cause"
 require_relative "decision"
 require_relative "release_plan"
 require_relative "distribution_packages"
+require_relative "distribution_gems"
 require_relative "../catalog/gem_resolution"
 require_relative "../apt/version"
 require_relative "../debian/naming"
 require_relative "../debian/package_version"
-require_relative "../debian/gem_version"
 require_relative "../release_specs/package_pattern"
 require_relative "../diagnostic"
 require_relative "../error"
@@ -31,7 +31,8 @@ module Relspec
       # +release_catalog+: Catalog::ReleaseCatalog; +effective+: the
       # release's EffectiveSpec; +spec_file+: its SpecFile (for locations);
       # +ancestors+: ReleaseSpec::Lineage::Opened in search order; +inventory+: Inventory;
-      # +distribution+: DistributionPackages (the targets' own ruby-* packages);
+      # +distribution+: DistributionPackages (the targets' own ruby-* packages,
+      # DistributionGems decides which gems come from them);
       # +uncommitted+: name => Catalog::UncommittedChanges::Change (noted).
       # Builds come out unversioned: Settlement gives them their versions.
       def initialize(release_catalog:, effective:, spec_file:, ancestors:, inventory:,
@@ -42,19 +43,19 @@ module Relspec
         @spec_file = spec_file
         @ancestors = ancestors
         @inventory = inventory
-        @distribution = distribution
-        @gem_requirements = release_catalog.gem_resolution.requirements
         @warnings = []
         @notes = release_catalog.gem_resolution.notes.dup
+        @gems = DistributionGems.new(distribution: distribution, requirements: release_catalog.gem_resolution.requirements,
+                                     notes: @notes)
         @uncommitted = uncommitted
       end
 
       def plan
-        blacklist = blacklist_patterns
+        blacklist = blacklist_entries
         targets = Target.all(@effective)
         unavailable = targets.to_h { |target| [target, unavailable_on(target)] }
         decisions = targets.to_h { |target| [target, plan_target(target, blacklist, unavailable[target])] }
-        note_gems_without_archive
+        @gems.note_unavailable(@catalog)
         # what a checkout holds beyond its commit is not in the release
         @uncommitted.sort.each { |name, change| @notes << change.note(name) }
         ReleasePlan.new(release: @effective.release, targets: decisions, packages: package_records(decisions, unavailable),
@@ -69,41 +70,10 @@ module Relspec
         names.each { |name| note_optional_missing(@catalog.package(name), target, unavailable) }
         providers = names.to_h { |name| [name, providers_of(@catalog.package(name), target)] }
         causes = names.to_h { |name| [name, direct_cause(@catalog.package(name), target, providers[name], blacklist)] }.compact
-        system = names.to_h { |name| [name, from_distribution(@catalog.package(name), target, causes[name])] }.compact
+        system = names.to_h { |name| [name, @gems.decide(@catalog.package(name), target, causes[name])] }.compact
         causes.reject! { |name, _| system.key?(name) }
         rebuild_dependents(names - system.keys, causes)
         names.to_h { |name| [name, system[name] || decide(@catalog.package(name), target, providers[name], causes[name])] }
-      end
-
-      # A gem of the release that the target distribution has at the same
-      # version (a gem packaged without `gems:`: at a version all its
-      # requirements accept) is taken from it (unless the spec blacklists the gem).
-      def from_distribution(package, target, cause)
-        return nil unless package.build_type == "gem" && cause&.kind != :blacklisted
-
-        note_missing_gem_dependencies(package, target)
-        name = Debian::Naming.distribution_gem(package.name)
-        versions = @distribution.versions_of(name, target)
-        if versions.empty?
-          @notes << "the #{target.codename} archive has no #{name}: gem #{package.name} is packaged here" if @distribution.read?(target)
-          return nil
-        end
-
-        # the newest that fits: a real ruby-<gem> may be newer than what libruby provides
-        if (version = versions.find { |candidate| distribution_fits?(package, candidate) })
-          return Decision.new(package: package.name, kind: :system, deb_name: name, version: version).freeze
-        end
-
-        @notes << "#{target.codename} has #{name} #{versions.join(', ')}, the release packages gem #{package.name} #{package.version}"
-        nil
-      end
-
-      def distribution_fits?(package, version)
-        requirements = @gem_requirements[package.name]
-        return Debian::GemVersion.debian_upstream(version) == upstream(package) unless requirements
-
-        found = Debian::GemVersion.from_debian(version)
-        !found.nil? && requirements.all? { |requirement| requirement.satisfied_by?(found) }
       end
 
       # name => Cause for the selected packages the target cannot have.
@@ -139,8 +109,8 @@ module Relspec
       end
 
       def direct_cause(package, target, providers, blacklist)
-        entry = blacklist.find { |pattern, _reason, _index| pattern.match?(package.name) }
-        return Cause.blacklisted(entry[0].source, entry[1]) if entry
+        entry = blacklist.find { |candidate| candidate.match?(package.name) }
+        return Cause.blacklisted(entry.pattern.source, entry.reason) if entry
 
         pinned = pin_cause(package, providers)
         return pinned if pinned
@@ -243,31 +213,6 @@ module Relspec
                                 build_type: package.build_type)
       end
 
-      def note_gems_without_archive
-        return if @catalog.packages.values.none? { |package| package.build_type == "gem" }
-
-        codenames = @distribution.unknown.map(&:codename).uniq.sort
-        unless codenames.empty?
-          @notes << "gems are packaged here on #{codenames.join(', ')}: no distribution archive to take ruby-* " \
-                    "packages from (distributions.<codename>.archive)"
-        end
-        @distribution.gaps.each { |target, why| @notes << "gems are packaged here on #{target}: #{why}" }
-      end
-
-      # A gem's runtime dependencies outside the release are the
-      # distribution's ruby-<name>; say so when its archive lacks one.
-      def note_missing_gem_dependencies(package, target)
-        return unless @distribution.read?(target)
-
-        package.os_dependencies_for(target.codename).gems.each do |dependency|
-          name = Debian::Naming.distribution_gem(dependency)
-          next if @distribution.version_of(name, target)
-
-          @notes << "gem #{package.name} needs #{dependency}, which the #{target.codename} archive lacks as #{name} " \
-                    "(add it to gems:)"
-        end
-      end
-
       # autoproj leaves out an optional dependency the distribution cannot
       # have (an osdep without package there, a package unavailable there:
       # +unavailable+, name => Cause); the package is built without it, which plan says.
@@ -303,16 +248,16 @@ module Relspec
         end
       end
 
-      # [pattern, reason, index] for each blacklist entry; an entry that
-      # matches no package of the workspace is an error.
-      def blacklist_patterns
-        entries = @effective.blacklist.map { |entry| [entry.pattern, entry.reason, entry.index] }
-        unmatched = entries.reject { |pattern, _, _| @catalog.packages.keys.any? { |name| pattern.match?(name) } }
+      # The spec's blacklist (ReleaseSpec::BlacklistEntry, in spec order);
+      # an entry that matches no package of the workspace is an error.
+      def blacklist_entries
+        entries = @effective.blacklist
+        unmatched = entries.reject { |entry| @catalog.packages.keys.any? { |name| entry.match?(name) } }
         unless unmatched.empty?
-          raise(InvalidInput, unmatched.map do |pattern, _, index|
-            Diagnostic.error("unmatched-blacklist", "blacklist entry #{pattern.source.inspect} matches no package " \
+          raise(InvalidInput, unmatched.map do |entry|
+            Diagnostic.error("unmatched-blacklist", "blacklist entry #{entry.pattern.source.inspect} matches no package " \
                                                     "of the workspace",
-                             location: @spec_file.location(["blacklist", index]),
+                             location: @spec_file.location(["blacklist", entry.index]),
                              hint: "check the name, or remove the entry")
           end)
         end

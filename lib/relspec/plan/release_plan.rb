@@ -33,10 +33,11 @@ module Relspec
           unavailable: unavailable.fetch(target).size }
       end
 
-      # Returns the same plan with other decisions (Settlement gives versions).
-      def with_targets(targets)
+      # Returns the same plan with other decisions (Settlement gives
+      # versions) and +warnings+ added (about those versions).
+      def with_targets(targets, warnings: [])
         ReleasePlan.new(release: release, targets: targets, packages: packages, release_digests: release_digests,
-                        warnings: warnings, notes: notes, unavailable: unavailable)
+                        warnings: self.warnings + warnings, notes: notes, unavailable: unavailable)
       end
 
       def builds(target)

@@ -4,6 +4,7 @@ require "digest"
 require_relative "build_order"
 require_relative "debian_inputs"
 require_relative "versioning"
+require_relative "rising_upstream"
 require_relative "../debian/debian_dir"
 require_relative "../debian/package_version"
 
@@ -22,16 +23,21 @@ module Relspec
       # +inputs+: DebianInputs; +versioning+: Versioning; +overlays+: the
       # Debian::Overlay of a package on an architecture (+overlays.call(name,
       # arch)+), read from overlays/ by Plan.read.
-      def initialize(catalog:, inputs:, versioning:, overlays:)
+      # +rising+: RisingUpstream, which keeps an archive import's version
+      # from going back (nil: versions as the archives' times make them).
+      def initialize(catalog:, inputs:, versioning:, overlays:, rising: nil)
         @catalog = catalog
         @inputs = inputs
         @versioning = versioning
         @overlays = overlays
+        @rising = rising
       end
 
-      # [targets with settled decisions, Target => {package => Work}]
+      # [targets with settled decisions, Target => {package => Work},
+      # the RisingUpstream::Raised of each build whose version was raised]
       def call(targets)
         work = {}
+        @raised = []
         settled = targets.to_h do |target, decisions|
           work[target] = {}
           final = decisions.dup
@@ -43,7 +49,7 @@ module Relspec
           end
           [target, final.freeze]
         end
-        [settled, work]
+        [settled, work, @raised.dup.freeze]
       end
 
       private
@@ -58,9 +64,18 @@ module Relspec
         parts.join("\0")
       end
 
+      def upstream_of(target, decision, package)
+        upstream = Debian::PackageVersion.of_package(package)
+        return upstream unless @rising && package.vcs.sha256 # an archive import
+
+        upstream, raised = @rising.call(target: target, package: package.name, deb_name: decision.deb_name, upstream: upstream)
+        @raised << raised if raised
+        upstream
+      end
+
       def settle(target, decision, decisions)
         package = @catalog.package(decision.package)
-        upstream = Debian::PackageVersion.of_package(package)
+        upstream = upstream_of(target, decision, package)
         input = @inputs.for(target, decision, upstream, decisions)
         overlay = @overlays.call(package.name, target.arch)
         digest = Digest::SHA256.hexdigest(Debian::DebianDir.digest(Debian::DebianDir.render(input, version: nil)) +

@@ -5,7 +5,7 @@ module Relspec
     # The automatic debug-symbol packages dh_strip makes of compiled code
     # (<package>-dbgsym_<version>_<arch>.deb, .ddeb on Ubuntu). The build
     # keeps and records them because the ABI dumps are made from them
-    # (Abi::Dumper); the release's repository carries them only when its
+    # (Builder::AbiDumper); the release's repository carries them only when its
     # spec asks (`repository: { debug_symbols: true }`): they are often
     # larger than the packages themselves and no robot installs them.
     module DebugSymbols

@@ -2,6 +2,7 @@
 
 require_relative "../error"
 require_relative "../file_lock"
+require_relative "../lock_holder"
 
 module Relspec
   module Publish
@@ -16,10 +17,10 @@ module Relspec
 
       module_function
 
-      # Yields once the lock is held; +waiting+ is called once (with what
-      # holds it) if another publisher holds it.
+      # Yields once the lock is held; +waiting+ is called once (with who
+      # holds it and since when, LockHolder) if another publisher holds it.
       def hold(repository, waiting: nil, &block)
-        FileLock.hold(repository, FILE_NAME, busy: ->(_file) { waiting&.call("another relspec publish") }, &block)
+        FileLock.hold(repository, FILE_NAME, busy: ->(file) { waiting&.call(LockHolder.of(file)) }, &block)
       rescue FileLock::Unavailable => e
         raise PublishError, "cannot lock the repository #{repository}: #{e.message}"
       end

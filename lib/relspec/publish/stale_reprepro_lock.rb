@@ -1,5 +1,6 @@
 # frozen_string_literal: true
 
+require_relative "../printable"
 require "find"
 require "set"
 
@@ -41,7 +42,7 @@ module Relspec
 
       # What a command says when #clear removed +lock+.
       def note(lock)
-        "removed reprepro's stale lock #{lock} (no reprepro uses the repository: one was killed before it could remove it)"
+        "removed reprepro's stale lock #{Printable.text(lock)} (no reprepro uses the repository: one was killed before it could remove it)"
       end
 
       # The /proc folders of reprepro processes that are alive (a killed

@@ -20,29 +20,38 @@ RSpec.describe "archive imports" do
     @archive = File.join(served, "tarball-1.2.tar.gz")
     write_tarball(@archive, "tarball-1.2/CMakeLists.txt" => "project(tarball)\n", "tarball-1.2/README" => "tarball\n")
     File.utime(modified, modified, @archive)
+    @back = File.join(served, "back-1.0.tar.gz") # its time moves back (issue 46, case 13)
+    write_tarball(@back, "back-1.0/CMakeLists.txt" => "project(back)\n")
     @server = HttpServer.new(served)
     builder = WorkspaceBuilder.new(@base)
     builder.package("base/cmake", type: :cmake, date: "2020-06-01T10:00:00Z")
     # bad input: an archive the server does not have, and a package set
     # patch that names a file outside the package
     builder.autobuild("import_package 'external/tarball'\nimport_package 'external/missing'\n" \
-                      "import_package 'external/escape'\nimport_package 'external/slow'\n")
+                      "import_package 'external/escape'\nimport_package 'external/level'\nimport_package 'external/back'\n" \
+                      "import_package 'external/slow'\n")
     root = builder.create
     File.write(File.join(root, "autoproj", "evil.patch"), "--- ../../etc/passwd\n+++ ../../etc/passwd\n@@ -1 +1 @@\n-a\n+b\n")
+    # made by `diff -ru a/ b/`, given at autobuild's default level 0 (issue 46, case 16)
+    File.write(File.join(root, "autoproj", "level.patch"),
+               "--- a/CMakeLists.txt\n+++ b/CMakeLists.txt\n@@ -1 +1 @@\n-project(tarball)\n+project(patched)\n")
     File.write(File.join(root, "autoproj", "overrides.yml"), <<~YAML)
       overrides:
         - external/tarball: { type: archive, url: "#{@server.url}/tarball-1.2.tar.gz" }
         - external/missing: { type: archive, url: "#{@server.url}/missing-1.0.tar.gz" }
         - external/escape: { type: archive, url: "#{@server.url}/tarball-1.2.tar.gz", patches: [$AUTOPROJ_ROOT/autoproj/evil.patch] }
+        - external/back: { type: archive, url: "#{@server.url}/back-1.0.tar.gz" }
+        - external/level: { type: archive, url: "#{@server.url}/tarball-1.2.tar.gz", patches: [$AUTOPROJ_ROOT/autoproj/level.patch] }
         - external/slow: { type: archive, url: "#{@server.url}/slow/tarball-1.2.tar.gz" }
     YAML
     # what autoproj's import left: the archive unpacked in the source folder
-    %w[tarball missing escape slow].each do |name|
+    %w[tarball missing escape level back slow].each do |name|
       FileUtils.mkdir_p(File.join(root, "src", "external", name))
       File.write(File.join(root, "src", "external", name, "CMakeLists.txt"), "project(#{name})\n")
     end
     FileUtils.mkdir_p(File.join(@base, "specs"))
-    { "r" => "tarball", "missing" => "missing", "escape" => "escape", "slow" => "slow" }.each do |spec, name|
+    { "r" => "tarball", "missing" => "missing", "escape" => "escape", "level" => "level", "back" => "back",
+      "slow" => "slow" }.each do |spec, name|
       File.write(File.join(@base, "specs", "#{spec}.yml"), <<~YAML)
         release: #{spec}
         maintainer: Rock Packaging <rock@example.org>
@@ -117,5 +126,50 @@ RSpec.describe "archive imports" do
     expect(@server.requests.count("/slow/tarball-1.2.tar.gz")).to eq(3)
     expect(elapsed).to be < 9
     expect(Dir[File.join(@base, "slow", "**", "*.dsc")]).to eq([])
+  end
+
+  # Issue 46, case 13: the version followed the archive's time back
+  # (0.20990101 → 0.20210101), which apt never takes for an upgrade. Each
+  # run fetches the archive again (a cache of its own), as after the cache
+  # entry was deleted.
+  it "keeps an archive import's version rising when the archive's time moves back, and warns" do
+    lock = File.join(@base, "releases", "back", "lock.yml")
+    cache = nil
+    plan = lambda do |time|
+      File.utime(time, time, @back)
+      cache = Dir.mktmpdir("cache", @base)
+      run = relspec("plan", "specs/back.yml", "--write", chdir: @base, env: { "XDG_CACHE_HOME" => cache })
+      expect(run.exit_code).to eq(0), run.stderr
+      [YAML.safe_load_file(lock).dig("targets", "bookworm/amd64", "external/back", "version"), run.stdout]
+    end
+    first, = plan.call(Time.utc(2099, 1, 1))
+    back, said = plan.call(Time.utc(2021, 1, 1))
+    again, = plan.call(Time.utc(2021, 1, 1))
+    # dpkg-source takes the raised version
+    compile = relspec("compile", "specs/back.yml", "--out", "back", chdir: @base, env: { "XDG_CACHE_HOME" => cache })
+    expect(compile.exit_code).to eq(0), compile.stderr
+    expect(Dir[File.join(@base, "back", "**", "*.dsc")].map { |path| File.basename(path) })
+      .to eq(["rock-back-external-back_0.20990101.000000+really0.20210101.000000-1~bookworm.dsc"])
+    later, quiet = plan.call(Time.utc(2100, 1, 1))
+    expect([first, back, again, later]).to eq(%w[0.20990101.000000-1~bookworm 0.20990101.000000+really0.20210101.000000-1~bookworm
+                                                 0.20990101.000000+really0.20210101.000000-1~bookworm 0.21000101.000000-1~bookworm])
+    expect(said).to include("external/back: its archive's time gives 0.20210101.000000, below 0.20990101.000000, which the " \
+                            "release already gave it (bookworm/amd64); versioned 0.20990101.000000+really0.20210101.000000, " \
+                            "so that apt takes it as an upgrade")
+    expect(quiet).not_to include("archive's time gives")
+  end
+
+  # Issue 46, case 16: dpkg-source stopped at "can't find file to patch",
+  # after the .orig and debian/ were made.
+  it "refuses a package set patch whose file the package does not have at its level, naming patch, file and level" do
+    run = relspec("compile", "specs/level.yml", "--out", "level", chdir: @base)
+    expect([run.exit_code, run.stdout]).to eq([1, ""])
+    expect(run.stderr.lines.grep_v(/WARN: .* does not have a manifest/).join).to eq(
+      "autoproj/level.patch: error[package-set-patch]: package set patch autoproj/level.patch changes a/CMakeLists.txt " \
+      "or b/CMakeLists.txt, which the package's source does not have at level 0 (patch -p0)\n  " \
+      "hint: fix the patch's file names, or its level in the package set (`patches: [[file, level]]`; autobuild's " \
+      "default level is 0, a patch made by `diff -ru a/ b/` needs 1)\n1 error in 1 file\n"
+    )
+    expect(Dir[File.join(@base, "level", "**", "*.{dsc,orig.tar.gz}")]).to eq([])
   end
 end

@@ -211,7 +211,7 @@ RSpec.describe "relspec compile with gems" do
       gems: { nokogiri: "1.10.10", mini_portile2: "2.4.0" }
       gem_source: ../gem-server/gems
     YAML
-    plan = Relspec::Plan.compute(path, cache_dir: nil).plan
+    plan = Relspec::Plan.run(path, cache_dir: nil).plan
     decisions = plan.targets.fetch(Relspec::Plan::Target.parse("bionic/amd64"))
     expect(decisions["mini_portile2"].to_h)
       .to eq("decision" => "inherit", "deb" => "rock-gemparent2-ruby-mini-portile2", "version" => "2.4.0-3~bionic",

@@ -14,13 +14,13 @@ RSpec.describe "debian/rules words from the package sets" do
   def rules(build_type, defines: {}, orogen_arguments: [])
     package = Relspec::Catalog::Package.new(
       name: "pkg", package_set: "set", build_type: build_type, commit_time: "2021-03-04T05:06:07Z",
-      source_dir: "src/pkg", defines: defines, orogen_arguments: orogen_arguments,
+      source_dir: "src/pkg", orogen_arguments: orogen_arguments,
       vcs: Relspec::Catalog::Vcs.from_h("type" => "git", "url" => "https://example.org/pkg.git", "commit" => "a" * 40)
     )
     input = Relspec::Debian::BuildInput.new(
       package: package, deb_name: "rock-r-pkg", upstream: "0.1", codename: "bookworm", release: "r",
       maintainer: "M <m@example.org>", install_dir: "/opt/rock/r/rock-r-pkg", dependencies: [], apt: [],
-      gems: [], gem: nil, debhelper_compat: 13
+      gems: [], gem: nil, debhelper_compat: 13, defines: defines
     )
     Relspec::Debian::DebianDir.render(input, version: "0.1-1~bookworm").fetch("rules").first
   end

@@ -17,7 +17,8 @@ require_relative "../../support/machine_apt"
 # workspace's environment. The well-formed set is the control: it goes on
 # to write its apt source and run apt-get update (which fails: nothing
 # serves 127.0.0.1:1). Root, as CI: the installed env.yml files the
-# environment cases need live below /opt/rock; MachineApt puts /etc/apt back.
+# environment cases need live below /opt/rock; MachineApt puts /etc/apt back
+# as it found it.
 RSpec.describe "the package set's init.rb on hostile data" do
   RELEASE = "zz-relspec-init-test"
   PREFIX = File.join("/opt/rock", RELEASE)
@@ -88,6 +89,21 @@ RSpec.describe "the package set's init.rb on hostile data" do
   hostile(:relspec_yml_misspelt, &relspec_yml("relase: #{RELEASE}\n"))
   hostile(:relspec_yml_release_list, &relspec_yml("release: [#{RELEASE}]\n"))
   hostile(:relspec_yml_not_yaml, &relspec_yml("release: [\n"))
+  # Issue 46, case 16: the user chose a child release whose parent (this
+  # package set's RELEASE) lacks the system or the architecture.
+  def self.child_of(change)
+    lambda do |set, config|
+      File.write(File.join(set, "data", "releases.yml"),
+                 "default:\n  repo_url: http://127.0.0.1:1\n#{RELEASE}:\n#{RELEASE}-child:\n  depends_on: #{RELEASE}\n")
+      File.write(File.join(set, "data", "#{RELEASE}-child-amd64.yml"), GOOD_OSDEPS.sub("rock-zz-", "rock-zz-child-"))
+      File.write(File.join(config, "relspec.yml"), "release: #{RELEASE}-child\n")
+      change.call(File.join(set, "data"))
+    end
+  end
+  hostile(:parent_without_system,
+          &child_of(->(data) { File.write(File.join(data, "#{RELEASE}-amd64.yml"), GOOD_OSDEPS.sub("debian", "ubuntu")) }))
+  hostile(:parent_without_arch,
+          &child_of(->(data) { File.rename(File.join(data, "#{RELEASE}-amd64.yml"), File.join(data, "#{RELEASE}-arm64.yml")) }))
   hostile(:blacklist_broken_regex) { |_, config| File.write(File.join(config, "deb_blacklist.yml"), "- drivers/(\n") }
 
   before(:all) do
@@ -216,6 +232,14 @@ RSpec.describe "the package set's init.rb on hostile data" do
     expect(refused(:relspec_yml_release_list)).to eq("relspec package set: #{config[:relspec_yml_release_list]}: " \
                                                      "release: is a list, #{expected}")
     expect(refused(:relspec_yml_not_yaml)).to start_with("relspec package set: #{config[:relspec_yml_not_yaml]}: is not plain YAML (")
+  end
+
+  it "names the release the user chose and the ancestor that lacks this system or architecture" do
+    expect(refused(:parent_without_system)).to match(
+      /\Arelspec package set: the release #{RELEASE}-child does not exist for debian \S+ \(amd64\): its ancestor #{RELEASE} is not built for it \(#{RELEASE} is built for ubuntu 12,bookworm\)\z/
+    )
+    expect(refused(:parent_without_arch)).to eq("relspec package set: the release #{RELEASE}-child does not exist for amd64: " \
+                                                "its ancestor #{RELEASE} is not built for it (#{RELEASE} is built for arm64)")
   end
 
   it "names the entry of a blacklist pattern that cannot match, once" do

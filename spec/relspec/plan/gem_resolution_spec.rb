@@ -53,7 +53,7 @@ RSpec.describe "gem osdeps resolved against the distribution and gem_source" do
   end
 
   def decisions(path)
-    result = Relspec::Plan.compute(path, cache_dir: nil)
+    result = Relspec::Plan.run(path, cache_dir: nil)
     [result.plan.targets.fetch(Relspec::Plan::Target.parse("bookworm/amd64")).transform_values(&:to_h), result]
   end
 

@@ -33,7 +33,7 @@ RSpec.describe "relspec plan" do
 
   def plan(name, yaml)
     path = @fixture.spec(name, yaml)
-    Relspec::Plan.compute(File.join(@dir, path), cache_dir: nil).plan
+    Relspec::Plan.run(File.join(@dir, path), cache_dir: nil).plan
   end
 
   def decisions(plan, target)
@@ -119,7 +119,7 @@ RSpec.describe "relspec plan" do
       repository: { path: ../repos/pub, trusted: true }
     YAML
     # the lock vouches for what was built; then the repository receives it
-    Relspec::Plan.compute(File.join(@dir, @fixture.spec("pub", yaml)), cache_dir: nil).write_lock
+    Relspec::Plan.run(File.join(@dir, @fixture.spec("pub", yaml)), cache_dir: nil).write_lock
     @fixture.repository("pub", [%w[bionic amd64]], { "data/models" => {} })
     published = plan("pub", yaml)
     expect(decisions(published, "bionic/amd64")["data/models"]).to eq('published: blacklisted by "data/models" (local patches)')
@@ -171,11 +171,11 @@ RSpec.describe "relspec plan" do
 
   it "writes the same lock bytes on every run, and again when planning from its own lock" do
     path = File.join(@dir, @fixture.spec("locked", "parent: mid\nblacklist: [{ match: base/types, reason: x }]\n"))
-    first = Relspec::Plan.compute(path, cache_dir: nil)
-    second = Relspec::Plan.compute(path, cache_dir: nil)
+    first = Relspec::Plan.run(path, cache_dir: nil)
+    second = Relspec::Plan.run(path, cache_dir: nil)
     expect(second.lock_text).to eq(first.lock_text)
     first.write_lock
-    expect(Relspec::Plan.compute(path, cache_dir: nil).lock_text).to eq(File.read(first.lock_path))
+    expect(Relspec::Plan.run(path, cache_dir: nil).lock_text).to eq(File.read(first.lock_path))
     expect(first.lock_text).not_to include(@dir)
     expect(first.lock_path).to eq(File.join(@dir, "releases", "locked", "lock.yml"))
   end

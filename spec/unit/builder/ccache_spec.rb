@@ -76,6 +76,20 @@ RSpec.describe Relspec::Builder::Ccache do
     expect([File.stat(dir).uid, File.stat(dir).gid]).to eq([100_123, 100_456])
   end
 
+  # Issue 46, case 15: an empty folder of another user was chowned to the
+  # build user and closed (0700), taking it from its owner.
+  it "refuses an empty folder of another user instead of giving it to the build user" do
+    skip "a folder of another uid needs root" unless Process.uid.zero?
+
+    dir = File.join(@dir, "theirs")
+    Dir.mkdir(dir, 0o755)
+    File.chown(4242, 4242, dir)
+    expect { described_class.new(dir, owner: [100_123, 100_456]).config_lines }
+      .to raise_error(Relspec::BuildError, "ccache folder #{dir} belongs to uid 4242, not to the uid sbuild's build " \
+                                           "user has here (100123): chown -R 100123:100456 it, or remove it")
+    expect([File.stat(dir).uid, File.stat(dir).gid, File.stat(dir).mode & 0o777]).to eq([4242, 4242, 0o755])
+  end
+
   it "gives the build user back what root made in its folder (ccache -z run by root), links included, not their targets" do
     skip "files of another uid need root" unless Process.uid.zero?
 

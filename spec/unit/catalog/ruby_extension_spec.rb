@@ -47,7 +47,7 @@ RSpec.describe Relspec::Catalog::RubyExtension, :tmpdir do
       input = Relspec::Debian::BuildInput.new(
         package: package, deb_name: "rock-r-tools-orocos.rb", upstream: "0.1", codename: "bookworm", release: "r",
         maintainer: "M <m@example.org>", install_dir: "/opt/rock/r/rock-r-tools-orocos.rb", dependencies: [], apt: [],
-        gems: [], gem: nil
+        gems: [], gem: nil, extension_task: Relspec::Catalog::RubyExtension.checked(package)
       )
       Relspec::Debian::DebianDir.render(input, version: "0.1-1~bookworm").transform_values(&:first)
     end

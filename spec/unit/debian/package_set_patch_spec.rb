@@ -41,7 +41,7 @@ RSpec.describe Relspec::Debian::PackageSetPatch do
   end
 
   it "strips as many components as the level says, keeps /dev/null, and leaves hunk lines alone" do
-    _, text = rewrite(<<~PATCH, level: 2)
+    _, text = rewrite(<<~PATCH, level: 2, files: ["lib/a.c"])
       --- /dev/null
       +++ x/y/CMakeLists.txt
       @@ -0,0 +1,2 @@
@@ -78,5 +78,21 @@ RSpec.describe Relspec::Debian::PackageSetPatch do
       .to raise_error(Relspec::InvalidInput) { |e| expect(e.diagnostics.first.message).to include("names no file inside") }
     expect { rewrite("--- a/x\n+++ b/x\n@@ -1 +1 @@\n-a\n+b\n", level: 2) }
       .to raise_error(Relspec::InvalidInput) { |e| expect(e.diagnostics.first.message).to include("fewer than 3 path components") }
+  end
+
+  # Issue 46, case 16: dpkg-source stopped later at "can't find file to patch".
+  it "refuses a patch whose file the package does not have at the patch's level, naming patch, file and level" do
+    text = "--- a/src/main.c\n+++ b/src/main.c\n@@ -1 +1 @@\n-a\n+b\n"
+    expect { rewrite(text, files: ["src/main.c"]) }.to raise_error(Relspec::InvalidInput) do |error|
+      expect(error.diagnostics.map(&:to_s)).to eq(
+        ["set/patches/fix.patch: error[package-set-patch]: package set patch set/patches/fix.patch changes a/src/main.c or " \
+         "b/src/main.c, which the package's source does not have at level 0 (patch -p0)\n  hint: fix the patch's file " \
+         "names, or its level in the package set (`patches: [[file, level]]`; autobuild's default level is 0, a patch " \
+         "made by `diff -ru a/ b/` needs 1)"]
+      )
+    end
+    expect(rewrite(text, level: 1, files: ["src/main.c"]).last).to include("--- a/src/main.c\n+++ b/src/main.c\n")
+    expect { rewrite("--- gone.c\n+++ /dev/null\n@@ -1 +0,0 @@\n-a\n") }
+      .to raise_error(Relspec::InvalidInput) { |e| expect(e.diagnostics.first.message).to eq("package set patch set/patches/fix.patch changes gone.c, which the package's source does not have at level 0 (patch -p0)") }
   end
 end

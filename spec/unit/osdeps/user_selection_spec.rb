@@ -37,4 +37,20 @@ RSpec.describe Relspec::Osdeps::UserSelection, :tmpdir do
     expect { select }.to raise_error(Relspec::InvalidInput)
     expect(Dir.exist?(File.join(@dir, "out"))).to be(false)
   end
+
+  # Values that become file names or reach messages are refused before
+  # anything is read (issue 46, case 14).
+  it "refuses a release, an architecture or a system that is no name, before reading the data" do
+    nowhere = { data: "/nonexistent", output: "/nonexistent" }
+    expect { select(release: "../x", **nowhere) }.to raise_error(Relspec::InvalidOption, '--release "../x" is not a release name')
+    expect { select(arch: "amd64\nx", **nowhere) }
+      .to raise_error(Relspec::InvalidOption, '--arch "amd64\nx" is not a Debian architecture name')
+    expect { select(os: "debian:12\e[2J", **nowhere) }
+      .to raise_error(Relspec::InvalidOption, '--os "debian:12\e[2J" holds control characters')
+  end
+
+  it "reads the data folder once the names are good" do
+    expect { select(data: "/nonexistent", output: "/nonexistent") }
+      .to raise_error(Relspec::InvalidInput) { |e| expect(e.diagnostics.first.rule).to eq("missing-osdeps") }
+  end
 end

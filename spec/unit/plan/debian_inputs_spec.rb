@@ -29,12 +29,14 @@ RSpec.describe Relspec::Plan::DebianInputs do
   let(:defines) do
     { "base/logging" => { "CM" => "${prefix:base/cmake}/lib", "GONE" => "${prefix:not/released}", "TYPE" => "Release" } }
   end
+  # rake tasks that compile an extension (Catalog::RubyExtension), by package
+  let(:extension_tasks) { {} }
   let(:catalog) do
     packages = graph.to_h do |name, (type, dependencies, apt)|
       [name, Relspec::Catalog::Package.new(
         name: name, package_set: "set", build_type: type, commit_time: "2020-06-01T00:00:00Z", source_dir: "src/#{name}",
         version: "1.0", dependencies: dependencies, defines: defines.fetch(name, {}),
-        environment: environment.fetch(name, []),
+        environment: environment.fetch(name, []), extension_task: extension_tasks[name],
         os_dependencies: { "bookworm" => Relspec::Catalog::OsDependencies.build(apt: apt) },
         vcs: Relspec::Catalog::Vcs.new(type: "git", url: "https://example.org/#{name}.git", commit: "c" * 40)
       )]
@@ -105,10 +107,25 @@ RSpec.describe Relspec::Plan::DebianInputs do
 
   it "gives a define naming a package's prefix the release prefix of that package, leaving out unreleased ones" do
     logging = input("base/logging")
-    expect(logging.prefixes).to eq("base/cmake" => "/opt/rock/r/rock-r-base-cmake")
+    expect(logging.defines).to eq("CM" => "/opt/rock/r/rock-r-base-cmake/lib", "TYPE" => "Release")
     rules = Relspec::Debian::DebianDir.render(logging, version: "1.0-1~bookworm").fetch("rules").first
     expect(rules).to include("-DCM=/opt/rock/r/rock-r-base-cmake/lib -DTYPE=Release -DCMAKE_INSTALL_PREFIX")
     expect(rules).not_to include("GONE")
-    expect(input("base/logging", decisions("base/cmake" => :system)).prefixes).to eq("base/cmake" => "/usr")
+    expect(input("base/logging", decisions("base/cmake" => :system)).defines).to eq("CM" => "/usr/lib", "TYPE" => "Release")
+  end
+
+  # debian/ renders from BuildInput alone: the plan checks the task that
+  # reaches debian/rules' rake command (a catalog can be written by hand)
+  describe "the extension task" do
+    let(:extension_tasks) { { "base/types" => "default", "gem/x" => "x;y" } }
+
+    it "is the package's, checked; nil without one" do
+      expect(input("base/types").extension_task).to eq("default")
+      expect(input("base/cmake").extension_task).to be_nil
+    end
+
+    it "refuses one a shell would read, from a catalog written by hand" do
+      expect { input("gem/x") }.to raise_error(ArgumentError, /bad rake task "x;y"/)
+    end
   end
 end

@@ -13,13 +13,19 @@ RSpec.describe Relspec::Plan::Settlement do
   let(:graph) { { "base/cmake" => [], "base/logging" => ["base/cmake"], "base/types" => ["base/logging"] } }
   # the package set's import patches, per package
   let(:patches) { {} }
+  # the packages imported from an archive (`type: archive`)
+  let(:archives) { [] }
   # made on every call: an example may change the patches between settlements
   def catalog
     packages = graph.to_h do |name, dependencies|
       [name, Relspec::Catalog::Package.new(
         name: name, package_set: "set", build_type: "cmake", commit_time: "2020-06-01T00:00:00Z", source_dir: "src/#{name}",
         version: "1.0", dependencies: dependencies, patches: patches.fetch(name, []),
-        vcs: Relspec::Catalog::Vcs.new(type: "git", url: "https://example.org/#{name}.git", commit: "c" * 40)
+        vcs: if archives.include?(name)
+               Relspec::Catalog::Vcs.new(type: "archive", url: "https://example.org/#{name}.tar.gz", sha256: "e" * 64)
+             else
+               Relspec::Catalog::Vcs.new(type: "git", url: "https://example.org/#{name}.git", commit: "c" * 40)
+             end
       )]
     end
     Relspec::Catalog.new(packages: packages, layout: graph.keys, codenames: ["bookworm"])
@@ -55,7 +61,8 @@ RSpec.describe Relspec::Plan::Settlement do
     index = held.transform_values { |version| Struct.new(:version).new(version) }
     own = Relspec::Plan::OwnRepository.new(held.empty? ? {} : { target => index })
     versioning = Relspec::Plan::Versioning.new(history: history, own: own)
-    described_class.new(catalog: catalog, inputs: inputs, versioning: versioning, overlays: overlays)
+    rising = Relspec::Plan::RisingUpstream.new(history: history, own: own)
+    described_class.new(catalog: catalog, inputs: inputs, versioning: versioning, overlays: overlays, rising: rising)
                    .call(target => decisions)
   end
 
@@ -135,6 +142,24 @@ RSpec.describe Relspec::Plan::Settlement do
       changed, = settle(history: history)
       expect(changed.fetch(target).fetch("base/types").version.revision).to eq(types.version.revision + 1)
       expect(changed.fetch(target).fetch("base/logging").version).to eq(first.fetch(target).fetch("base/logging").version)
+    end
+  end
+
+  context "with an archive import whose time moved back (issue 46, case 13)" do
+    let(:archives) { ["base/logging"] }
+
+    it "raises its version above the one the history records, hands the raise on, and leaves git packages alone" do
+      later = "1.0.20990101.000000"
+      history = Relspec::Plan::History.empty
+                                      .with(target, "base/logging", Relspec::Debian::PackageVersion.new(later, 2, "bookworm"), "d")
+                                      .with(target, "base/types", Relspec::Debian::PackageVersion.new(later, 1, "bookworm"), "d")
+      targets, work, raised = settle(history: history)
+      expect(targets.fetch(target).fetch("base/logging").version.to_s).to eq("#{later}+really#{upstream}-1~bookworm")
+      expect(work.fetch(target).fetch("base/types").input.dependencies.map(&:version))
+        .to eq(["#{later}+really#{upstream}-1~bookworm"])
+      expect(targets.fetch(target).fetch("base/types").version.to_s).to eq("#{upstream}-1~bookworm")
+      expect(raised.map(&:to_h)).to eq([{ package: "base/logging", target: target, archive: upstream, above: later,
+                                          upstream: "#{later}+really#{upstream}" }])
     end
   end
 end

@@ -1,28 +1,22 @@
 # frozen_string_literal: true
 
-require "digest"
 require "fileutils"
-require_relative "../../atomic_file"
 require_relative "../../error"
-require_relative "../build_plan"
-require_relative "../request"
 require_relative "../scheduler"
-require_relative "../staged_results"
 require_relative "job_result"
-require_relative "job_script"
-require_relative "file_pattern"
+require_relative "run"
+require_relative "submission"
 
 module Relspec
   module Builder
     module Slurm
       # Builds one target's plan on a Slurm cluster: relspec keeps the
       # graph and the backend's command lines, Slurm places and runs the
-      # jobs. A chroot-prepare job on a node of the target's architecture,
-      # then one job per source package depending (afterok) on it and on
-      # the jobs of its build-dependencies built in this run; everything is
-      # submitted held in plan (topological) order and released at once.
+      # jobs (Submission: a chroot-prepare job, then one job per source
+      # package, held and released at once), and the Engine follows them
+      # to their outcomes.
       #
-      # The run id is a digest of the target folder, the backend and
+      # The Run's id is a digest of the target folder, the backend and
       # plan.yml: running again on the same plan adopts the run's jobs still
       # in the queue and submits only what is missing. Job ids of earlier
       # runs are never used in a dependency: Slurm treats an id it has
@@ -53,9 +47,8 @@ module Relspec
           @plan = plan
           @target = target
           @dir = plan.dir
-          @run_id = run_id
-          @jobs_dir = File.join(@dir, "slurm", @run_id)
-          FileUtils.mkdir_p(@jobs_dir)
+          @run = Run.new(plan, target, @backend.name)
+          FileUtils.mkdir_p(@run.jobs_dir)
           @on_start = on_start
           @on_done = on_done
           @outcomes = []
@@ -64,7 +57,8 @@ module Relspec
           @keep_going = keep_going
           pending = plan.entries.reject { |entry| done.include?(entry.source) }
           @tracked = {} # job id => entry
-          live = live_jobs
+          @submission = @prepare_id = nil # this run's, not an earlier target's
+          live = @run.live_jobs(@cluster.queue)
           pending = settle_finished(pending, live) unless rebuild
           return @outcomes if pending.empty?
 
@@ -78,30 +72,13 @@ module Relspec
 
         private
 
-        def run_id
-          Digest::SHA256.hexdigest([@dir, @backend.name, File.read(File.join(@dir, BuildPlan::FILE))].join("\0"))[0, 12]
-        end
-
-        def job_name(source)
-          "#{@plan.release}/#{@target.dir_name}/#{source}@#{@run_id}"
-        end
-
-        # The run's jobs still queued or running (an earlier relspec of this
-        # run was killed): source (or "chroot") => job.
-        def live_jobs
-          suffix = "@#{@run_id}"
-          prefix = "#{@plan.release}/#{@target.dir_name}/"
-          @cluster.queue.select { |job| job.live? && job.name.to_s.end_with?(suffix) && job.name.start_with?(prefix) }
-                  .sort_by(&:id).to_h { |job| [job.name.delete_prefix(prefix).delete_suffix(suffix), job] }
-        end
-
         # Packages whose job (of an earlier relspec of this run) finished
         # and wrote a verified result: recorded built without a new job.
         def settle_finished(pending, live)
           pending.reject do |entry|
             next false if live[entry.source]
 
-            result = JobResult.read(result_path(entry.source), @dir)
+            result = JobResult.read(@run.result_path(entry.source), @dir)
             next false unless result&.built? && result.problem(entry.source, entry.version).nil?
 
             report(Scheduler::Outcome.new(entry: entry, status: :built, value: result.paths, duration: result.duration))
@@ -110,79 +87,14 @@ module Relspec
         end
 
         def submit_all(pending, live, repositories, done_debs)
-          held = live.values.select(&:held?).map(&:id)
-          @prepare_id = live["chroot"]&.id || submit_prepare
-          held << @prepare_id unless live["chroot"]
-          ids = {}
-          in_run = pending.to_h { |entry| [entry.source, entry] }
-          pending.each do |entry|
-            adopted = live[entry.source]
-            ids[entry.source] = adopted&.id || submit_build(entry, in_run, ids, repositories, done_debs)
-            held << ids[entry.source] unless adopted
-            @tracked[ids[entry.source]] = entry
-          end
-          @cluster.release(held)
+          @submission = Submission.new(cluster: @cluster, settings: @settings, backend: @backend, run: @run, plan: @plan,
+                                       target: @target)
+          @tracked = @submission.tracked
+          @submission.call(pending, live, repositories, done_debs)
+          @prepare_id = @submission.prepare_id
         rescue BuildError
           cancel_all # nothing of a refused run stays held in the queue
           raise
-        end
-
-        def submit_prepare
-          path = File.join(@jobs_dir, "chroot.sh")
-          AtomicFile.write(path, JobScript.render(title: "relspec: prepare the #{@target} chroot (run #{@run_id})",
-                                                  steps: @backend.prepare_steps(@target),
-                                                  work: work_dir("chroot"), result: result_path("chroot")))
-          submit(path, "chroot", File.join(@dir, "logs", "prepare.log"), [])
-        end
-
-        def submit_build(entry, in_run, ids, repositories, done_debs)
-          ancestors = ancestors(entry, in_run)
-          staged = StagedResults.new(@dir, entry.source)
-          request = Request.new(source: entry.source, version: entry.version, dsc: File.expand_path(@plan.dsc_path(entry)),
-                                target: @target, repositories: repositories,
-                                local_debs: done_debs + ancestors.map { |source| File.join(@dir, "results", source) },
-                                output_dir: staged.final, log: log_path(entry.source))
-          work = work_dir(entry.source)
-          path = File.join(@jobs_dir, "#{entry.source}.sh")
-          script = JobScript.render(title: "relspec: build #{entry.source} #{entry.version} for #{@plan.release} " \
-                                           "#{@target} (run #{@run_id})",
-                                    steps: @backend.job_steps(request, work), work: work,
-                                    result: result_path(entry.source), output_dir: request.output_dir,
-                                    staging: staged.staging,
-                                    prefix: "results/#{entry.source}")
-          AtomicFile.write(path, script)
-          # afterok on every build of the run the job's backend installs
-          # (the closure), not only the direct build-dependencies
-          deps = [@prepare_id, *ancestors.filter_map { |source| ids[source] }]
-          submit(path, entry.source, request.log, deps)
-        end
-
-        # The build-dependencies of +entry+ built in this run, also
-        # indirect ones (sbuild installs them all from the folders given).
-        def ancestors(entry, in_run, seen = {})
-          entry.build_depends.each do |dep|
-            next if seen[dep] || !in_run[dep]
-
-            seen[dep] = true
-            ancestors(in_run[dep], in_run, seen)
-          end
-          seen.keys.sort
-        end
-
-        def submit(path, source, log, deps)
-          feature = @settings.feature(@target.arch)
-          options = ["--job-name=#{job_name(source)}", "--output=#{FilePattern.escape(log)}", "--open-mode=truncate",
-                     "--chdir=#{@jobs_dir}", "--kill-on-invalid-dep=yes", *@settings.sbatch_options,
-                     *(feature ? ["--constraint=#{feature}"] : []),
-                     *(deps.empty? ? [] : ["--dependency=afterok:#{deps.join(':')}"])]
-          @cluster.submit(path, options).tap { |id| (@submitted ||= []) << id }
-        rescue BuildError => e
-          raise unless e.message.include?("Invalid feature")
-
-          raise BuildError, "#{@target}: no node of the Slurm cluster has the feature #{feature} that builds for " \
-                            "#{@target.arch} need (set it on the nodes that build #{@target.arch}, natively or by " \
-                            "emulation, or name their feature with --slurm features.#{@target.arch}=NAME; " \
-                            "docs/scale-out.md)"
         end
 
         def poll
@@ -212,12 +124,12 @@ module Relspec
           job = queue[@prepare_id]
           return if @failed["chroot"] || job.nil? || job.live? || job.state == COMPLETED
 
-          @failed["chroot"] = "the #{@target} chroot job failed (#{job.state}, see #{File.join(@dir, 'logs', 'prepare.log')})"
+          @failed["chroot"] = "the #{@target} chroot job failed (#{job.state}, see #{@run.prepare_log})"
         end
 
         def settle(id, entry, job)
           @tracked.delete(id)
-          result = JobResult.read(result_path(entry.source), @dir)
+          result = JobResult.read(@run.result_path(entry.source), @dir)
           state = job&.state
           if (state.nil? || state == COMPLETED) && result&.built?
             problem = result.problem(entry.source, entry.version)
@@ -234,7 +146,7 @@ module Relspec
         end
 
         def failure_reason(id, entry, job, result)
-          log = log_path(entry.source)
+          log = @run.log_path(entry.source)
           return "#{entry.source}: Slurm job #{id} left the queue without a result, see #{log}" unless job
 
           exit = result ? result.exit_status : job.exit_code
@@ -307,7 +219,7 @@ module Relspec
         # "cancelled" is said when it is true: Cluster#cancel_and_wait
         # waits, bounded, for the jobs to end, and those still ending are named.
         def cancel_all
-          ids = (Array(@submitted) + @tracked.keys + [@prepare_id].compact).uniq.sort
+          ids = (Array(@submission&.submitted) + @tracked.keys + [@prepare_id || @submission&.prepare_id].compact).uniq.sort
           return if ids.empty?
 
           ending = begin
@@ -315,18 +227,9 @@ module Relspec
           rescue BuildError
             [] # a job that ended meanwhile cannot be cancelled: nothing to do
           end
-          message = "relspec: cancelled the Slurm jobs of run #{@run_id}: #{ids.join(', ')}"
+          message = "relspec: cancelled the Slurm jobs of run #{@run.id}: #{ids.join(', ')}"
           message += " (still ending: #{ending.join(', ')}; squeue shows when they have)" unless ending.empty?
           @notices&.puts(message)
-        end
-
-        def result_path(source) = File.join(@jobs_dir, "#{source}.result")
-
-        def log_path(source) = File.join(@dir, "logs", "#{source}.log")
-
-        # On the node, outside the shared filesystem.
-        def work_dir(source)
-          File.join("/tmp", "relspec-slurm-#{@run_id}-#{source}")
         end
       end
     end

@@ -127,16 +127,28 @@ module RelspecPackageSet
         path = File.join(@data, "#{name}-#{system.arch}.yml")
         unless File.file?(path)
           built = Dir.glob("#{name}-*.yml", base: @data).map { |file| file.delete_prefix("#{name}-").delete_suffix(".yml") }
-          refuse("the release #{name} does not exist for #{system.arch} (it is built for #{built.sort.join(', ')})")
+          # not a longer release's files (demo-child-amd64.yml is not demo's "child-amd64")
+          built.reject! { |arch| releases.key?("#{name}-#{arch[/\A(.+)-[^-]+\z/, 1]}") }
+          refuse(missing(lineage, name, system.arch, built.sort.join(", ")))
         end
         osdeps = RelspecPackageSet.read_yaml(path, {})
         found = checked(path, Relspec::Osdeps::Reader.resolve(osdeps, system.os))
         if found.empty?
-          refuse("the release #{name} does not exist for #{system} (it is built for #{labels(osdeps).join('; ')})")
+          refuse(missing(lineage, name, system, labels(osdeps).join("; ")))
         end
         mapping.merge!(found)
       end
       mapping
+    end
+
+    # The release the user chose (the lineage's last) is what does not
+    # exist; when an ancestor is what lacks the system, it is named too.
+    def missing(lineage, name, system, built)
+      chosen = lineage.last
+      return "the release #{name} does not exist for #{system} (it is built for #{built})" if name == chosen
+
+      "the release #{chosen} does not exist for #{system}: its ancestor #{name} is not built for it " \
+        "(#{name} is built for #{built})"
     end
 
     def labels(osdeps)

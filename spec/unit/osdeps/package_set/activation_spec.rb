@@ -47,4 +47,19 @@ RSpec.describe RelspecPackageSet::Activation, :tmpdir do
     expect { activation.send(:mapping, %w[base], other) }
       .to raise_error(Autoproj::ConfigError, /the release base does not exist for ubuntu focal \(amd64\) \(it is built for debian 12,bookworm\)/)
   end
+
+  # Issue 46, case 16: the user chose a child whose ancestor lacks the
+  # system or the architecture; base-child-amd64.yml is not base's "child-amd64".
+  it "names the release the user chose and the ancestor that lacks this system or architecture" do
+    File.write(File.join(@data, "releases.yml"), "base: ~\nbase-child: { depends_on: base }\n")
+    osdeps("base-child", "base/cmake" => "rock-child-cmake")
+    other = RelspecPackageSet::System.new(Relspec::Osdeps::OperatingSystem.new(%w[ubuntu], %w[focal]), "amd64", "focal")
+    expect { activation.send(:mapping, %w[base base-child], other) }
+      .to raise_error(Autoproj::ConfigError, "relspec package set: the release base-child does not exist for ubuntu focal (amd64): " \
+                                             "its ancestor base is not built for it (base is built for debian 12,bookworm)")
+    File.rename(File.join(@data, "base-amd64.yml"), File.join(@data, "base-arm64.yml"))
+    expect { activation.send(:mapping, %w[base base-child], system) }
+      .to raise_error(Autoproj::ConfigError, "relspec package set: the release base-child does not exist for amd64: " \
+                                             "its ancestor base is not built for it (base is built for arm64)")
+  end
 end

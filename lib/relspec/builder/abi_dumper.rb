@@ -7,7 +7,7 @@ require "zlib"
 require_relative "../error"
 
 module Relspec
-  module Abi
+  module Builder
     # Makes the ABI dumps of one build: every shared library its .debs ship
     # (an ELF file named lib*.so or lib*.so.N…, not a link), described by
     # libabigail's `abidw` from the library and the debug information the
@@ -16,7 +16,7 @@ module Relspec
     # name and no time in its header, so the same library gives the same
     # bytes (abidw is told to leave out the paths a build folder would put
     # in).
-    class Dumper
+    class AbiDumper
       # What a dump of library +library+ is stored as, +path+ the file.
       Dump = Struct.new(:library, :path, keyword_init: true)
 
@@ -76,7 +76,7 @@ module Relspec
         xml = File.join(root, "#{File.basename(library)}.xml")
         @run.call([*ABIDW, "--debug-info-dir", File.join(root, DEBUG_ROOT), "--out-file", xml, library], log: log)
         path = File.join(dir, "#{File.basename(library)}#{SUFFIX}")
-        Dumper.compress(xml, path)
+        AbiDumper.compress(xml, path)
         Dump.new(library: File.basename(library), path: path).freeze
       rescue ToolError => e
         File.open(log, "a") { |file| file.puts("relspec: no ABI dump of #{File.basename(library)}: #{e.message}") }
@@ -103,7 +103,7 @@ module Relspec
       def keep(registry, dir)
         FileUtils.mkdir_p(dir)
         path = File.join(dir, "#{File.basename(registry)}#{SUFFIX}")
-        Dumper.compress(registry, path)
+        AbiDumper.compress(registry, path)
         Dump.new(library: File.basename(registry), path: path).freeze
       end
 

@@ -4,9 +4,9 @@ require_relative "../unit_helper"
 require "tmpdir"
 require "fileutils"
 require "zlib"
-require "relspec/abi/dumper"
+require "relspec/builder/abi_dumper"
 
-RSpec.describe Relspec::Abi::Dumper, :tmpdir do
+RSpec.describe Relspec::Builder::AbiDumper, :tmpdir do
   def file(path, content)
     full = File.join(@dir, path)
     FileUtils.mkdir_p(File.dirname(full))

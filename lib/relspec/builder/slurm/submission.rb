@@ -1,0 +1,118 @@
+# frozen_string_literal: true
+
+require_relative "../../atomic_file"
+require_relative "../../error"
+require_relative "../request"
+require_relative "../staged_results"
+require_relative "job_script"
+require_relative "file_pattern"
+
+module Relspec
+  module Builder
+    module Slurm
+      # Submits the jobs of one Run: a chroot-prepare job on a node of the
+      # target's architecture, then one job per pending source package
+      # depending (afterok) on it and on the jobs of its build-dependencies
+      # built in this run, each written as a JobScript. Everything is
+      # submitted held, in plan (topological) order, and released at once;
+      # the run's jobs still in the queue are adopted, not submitted again.
+      class Submission
+        # What was submitted or adopted so far, also when submitting
+        # stopped half-way (what an interrupted run cancels): the ids
+        # submitted, the chroot job's id, and {job id => entry} of the
+        # builds, in plan order.
+        attr_reader :submitted, :prepare_id, :tracked
+
+        def initialize(cluster:, settings:, backend:, run:, plan:, target:)
+          @cluster = cluster
+          @settings = settings
+          @backend = backend
+          @run = run
+          @plan = plan
+          @target = target
+          @submitted = []
+          @prepare_id = nil
+          @tracked = {}
+        end
+
+        # +pending+: the BuildPlan entries to build; +live+: the run's jobs
+        # in the queue (Run#live_jobs).
+        def call(pending, live, repositories, done_debs)
+          held = live.values.select(&:held?).map(&:id)
+          @prepare_id = live["chroot"]&.id || submit_prepare
+          held << @prepare_id unless live["chroot"]
+          ids = {}
+          in_run = pending.to_h { |entry| [entry.source, entry] }
+          pending.each do |entry|
+            adopted = live[entry.source]
+            ids[entry.source] = adopted&.id || submit_build(entry, in_run, ids, repositories, done_debs)
+            held << ids[entry.source] unless adopted
+            @tracked[ids[entry.source]] = entry
+          end
+          @cluster.release(held)
+        end
+
+        private
+
+        def submit_prepare
+          path = File.join(@run.jobs_dir, "chroot.sh")
+          AtomicFile.write(path, JobScript.render(title: "relspec: prepare the #{@target} chroot (run #{@run.id})",
+                                                  steps: @backend.prepare_steps(@target),
+                                                  work: @run.work_dir("chroot"), result: @run.result_path("chroot")))
+          submit(path, "chroot", @run.prepare_log, [])
+        end
+
+        def submit_build(entry, in_run, ids, repositories, done_debs)
+          ancestors = ancestors(entry, in_run)
+          dir = @run.dir
+          staged = StagedResults.new(dir, entry.source)
+          request = Request.new(source: entry.source, version: entry.version, dsc: File.expand_path(@plan.dsc_path(entry)),
+                                target: @target, repositories: repositories,
+                                local_debs: done_debs + ancestors.map { |source| File.join(dir, "results", source) },
+                                output_dir: staged.final, log: @run.log_path(entry.source))
+          work = @run.work_dir(entry.source)
+          path = File.join(@run.jobs_dir, "#{entry.source}.sh")
+          script = JobScript.render(title: "relspec: build #{entry.source} #{entry.version} for #{@plan.release} " \
+                                           "#{@target} (run #{@run.id})",
+                                    steps: @backend.job_steps(request, work), work: work,
+                                    result: @run.result_path(entry.source), output_dir: request.output_dir,
+                                    staging: staged.staging,
+                                    prefix: "results/#{entry.source}")
+          AtomicFile.write(path, script)
+          # afterok on every build of the run the job's backend installs
+          # (the closure), not only the direct build-dependencies
+          deps = [@prepare_id, *ancestors.filter_map { |source| ids[source] }]
+          submit(path, entry.source, request.log, deps)
+        end
+
+        # The build-dependencies of +entry+ built in this run, also
+        # indirect ones (sbuild installs them all from the folders given).
+        def ancestors(entry, in_run, seen = {})
+          entry.build_depends.each do |dep|
+            next if seen[dep] || !in_run[dep]
+
+            seen[dep] = true
+            ancestors(in_run[dep], in_run, seen)
+          end
+          seen.keys.sort
+        end
+
+        def submit(path, source, log, deps)
+          feature = @settings.feature(@target.arch)
+          options = ["--job-name=#{@run.job_name(source)}", "--output=#{FilePattern.escape(log)}", "--open-mode=truncate",
+                     "--chdir=#{@run.jobs_dir}", "--kill-on-invalid-dep=yes", *@settings.sbatch_options,
+                     *(feature ? ["--constraint=#{feature}"] : []),
+                     *(deps.empty? ? [] : ["--dependency=afterok:#{deps.join(':')}"])]
+          @cluster.submit(path, options).tap { |id| @submitted << id }
+        rescue BuildError => e
+          raise unless e.message.include?("Invalid feature")
+
+          raise BuildError, "#{@target}: no node of the Slurm cluster has the feature #{feature} that builds for " \
+                            "#{@target.arch} need (set it on the nodes that build #{@target.arch}, natively or by " \
+                            "emulation, or name their feature with --slurm features.#{@target.arch}=NAME; " \
+                            "docs/scale-out.md)"
+        end
+      end
+    end
+  end
+end

@@ -1,0 +1,81 @@
+# frozen_string_literal: true
+
+require_relative "../../unit_helper"
+require "relspec/target"
+require "relspec/builder/build_plan"
+require "relspec/builder/host_backend"
+require "relspec/builder/slurm/cluster"
+require "relspec/builder/slurm/settings"
+require "relspec/builder/slurm/run"
+require "relspec/builder/slurm/submission"
+
+# What one run submits to Slurm, and in which order. The cluster here is an
+# in-memory stand-in that records sbatch's arguments: the unit layer starts
+# no process; spec/relspec/builder/slurm_spec.rb runs the same code against
+# a real one-node cluster.
+RSpec.describe Relspec::Builder::Slurm::Submission, :tmpdir do
+  # Records submissions (held), gives increasing ids, records releases.
+  class RecordingCluster
+    attr_reader :submitted, :released
+
+    def initialize
+      @submitted = []
+      @released = []
+    end
+
+    def submit(script, options)
+      @submitted << [File.basename(script), options]
+      100 + @submitted.size
+    end
+
+    def release(ids)
+      @released.concat(ids)
+    end
+  end
+
+  let(:target) { Relspec::Target.new("bookworm", "amd64") }
+  let(:cluster) { RecordingCluster.new }
+
+  def entry(source, build_depends = [])
+    Relspec::Builder::BuildPlan::Entry.new(package: source, source: source, version: "1.0-1",
+                                           dsc: "#{source}/#{source}_1.0-1.dsc", build_depends: build_depends)
+  end
+
+  def submission(entries)
+    Relspec::Builder::BuildPlan.write(@dir, release: "r", target: target, entries: entries)
+    plan = Relspec::Builder::BuildPlan.read(@dir)
+    run = Relspec::Builder::Slurm::Run.new(plan, target, "host")
+    FileUtils.mkdir_p(run.jobs_dir)
+    described_class.new(cluster: cluster, settings: Relspec::Builder::Slurm::Settings.new({}),
+                        backend: Relspec::Builder::HostBackend.new(nil), run: run, plan: plan, target: target)
+  end
+
+  def dependency(options)
+    options.find { |option| option.start_with?("--dependency=") }
+  end
+
+  it "submits the chroot job, then each build after it and after every build-dependency of the run, and releases them at once" do
+    entries = [entry("aa"), entry("bb", ["aa"]), entry("cc", ["bb"])]
+    sub = submission(entries)
+    sub.call(entries, {}, [], [])
+    expect(cluster.submitted.map(&:first)).to eq(%w[chroot.sh aa.sh bb.sh cc.sh])
+    expect(cluster.submitted.map { |_, options| dependency(options) })
+      .to eq([nil, "--dependency=afterok:101", "--dependency=afterok:101:102", "--dependency=afterok:101:102:103"])
+    expect(cluster.submitted.last.last).to include("--constraint=amd64", "--kill-on-invalid-dep=yes")
+    expect(cluster.released).to eq([101, 102, 103, 104])
+    expect([sub.prepare_id, sub.submitted, sub.tracked.transform_values(&:source)])
+      .to eq([101, [101, 102, 103, 104], { 102 => "aa", 103 => "bb", 104 => "cc" }])
+  end
+
+  it "adopts the run's jobs still in the queue, releasing only the held ones" do
+    entries = [entry("aa"), entry("bb", ["aa"])]
+    sub = submission(entries)
+    live = { "chroot" => Relspec::Builder::Slurm::Cluster::Job.new(id: 7, state: "RUNNING"),
+             "aa" => Relspec::Builder::Slurm::Cluster::Job.new(id: 8, state: "PENDING", reason: "JobHeldUser") }
+    sub.call(entries, live, [], [])
+    expect(cluster.submitted.map { |script, options| [script, dependency(options)] })
+      .to eq([["bb.sh", "--dependency=afterok:7:8"]])
+    expect(cluster.released).to eq([8, 101])
+    expect(sub.tracked).to eq(8 => entries[0], 101 => entries[1])
+  end
+end
