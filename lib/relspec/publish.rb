@@ -11,14 +11,14 @@ require_relative "output_tree"
 require_relative "project"
 require_relative "target_build"
 require_relative "builder/target_lock"
-require_relative "publish/repository_config"
+require_relative "reprepro/config"
 require_relative "publish/repository_lock"
 require_relative "publish/stale_reprepro_lock"
 require_relative "publish/transaction"
 require_relative "publish/live_lock"
 require_relative "publish/upload"
 require_relative "publish/pool_guard"
-require_relative "publish/reprepro"
+require_relative "reprepro/runner"
 require_relative "publish/signing_key"
 require_relative "publish/locked_release"
 require_relative "publish/held_packages"
@@ -99,7 +99,8 @@ module Relspec
       uploads = uploads(results, debug_symbols: effective.repository.debug_symbols)
       sign_with = effective.repository.sign_with
       SigningKey.check(sign_with) if sign_with
-      config = RepositoryConfig.new(release: effective.release, targets: all, sign_with: sign_with)
+      config = Reprepro::Config.new(label: effective.release, description: "#{effective.release} for %<codename>s",
+                                    targets: all, source: true, sign_with: sign_with)
       check_links(repository, results)
       RepositoryLock.hold(repository, waiting: waiting) do
         # read before anything is published: a damaged index is made again
@@ -150,7 +151,7 @@ module Relspec
       ensure
         lock.release
       end
-      Reprepro.new(repository).deleteunreferenced
+      Reprepro::Runner.new(repository, error: PublishError).deleteunreferenced
       [stale, recovered, result]
     end
 
@@ -186,8 +187,8 @@ module Relspec
     # dists/ again even if the configuration is unchanged (a database put
     # back may have been changed by hand since).
     def self.include_targets(repository, dirs, config, results, uploads, export:)
-      reprepro = Reprepro.new(repository, dirs)
-      changed = write_config(dirs.fetch(:conf), config)
+      reprepro = Reprepro::Runner.new(repository, dirs, error: PublishError)
+      changed = config.write(dirs.fetch(:conf))
       PoolGuard.check(repository, uploads.values.flatten.flat_map(&:items),
                       published: Dir.empty?(dirs.fetch(:db)) ? [] : reprepro.pool_files)
       targets = results.map do |target, read|
@@ -206,11 +207,6 @@ module Relspec
       # packages, a new signing key) only by an export.
       reprepro.export if changed || export
       targets
-    end
-
-    def self.write_config(dir, config)
-      FileUtils.mkdir_p(dir)
-      config.files.map { |name, text| AtomicFile.update(File.join(dir, name), text) }.any?
     end
 
     # Per built target, the ABI dumps the repository lists (an
@@ -254,7 +250,7 @@ module Relspec
       written = Osdeps::Files.write_release(listing.targets, effective, File.join(repository, OSDEPS_DIR))
       [written.changed_count, listing.missing]
     end
-    private_class_method :check_links, :uploads, :transaction, :repository_path, :results_of, :include_targets, :write_config,
+    private_class_method :check_links, :uploads, :transaction, :repository_path, :results_of, :include_targets,
                          :write_osdeps,
                          :write_abi_dumps
   end

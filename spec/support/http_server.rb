@@ -25,8 +25,9 @@ class HttpServer
   end
 
   # +fault+: 404, 500, :stall (no answer for +seconds+), :redirect (302
-  # to the same path below /moved/) or :no_last_modified (the file without
-  # a Last-Modified header, as forges' generated archives), for paths
+  # to the same path below /moved/), :no_last_modified (the file without
+  # a Last-Modified header, as forges' generated archives) or :unavailable_once
+  # (503 the first time a path is asked, then the file), for paths
   # matching +pattern+.
   def fail(pattern, fault, seconds: 5)
     @faults[pattern] = [fault, seconds]
@@ -47,7 +48,9 @@ class HttpServer
     when 404, 500 then response.status = fault
     when :stall then sleep(seconds)
     when :redirect then response.set_redirect(WEBrick::HTTPStatus::Found, "#{url}/moved#{path}")
+    when :unavailable_once then fault = @requests.count(path) == 1 ? 503 : nil
     end
+    response.status = 503 if fault == 503
     return if fault && fault != :no_last_modified
 
     file = File.join(@root, path.sub(%r{\A/[^/]+/(?=dists/)}, "/").delete_prefix("/moved"))

@@ -4,6 +4,7 @@ require_relative "../atomic_file"
 require_relative "../display_path"
 require_relative "../error"
 require_relative "../output_tree"
+require_relative "../debian_name"
 require_relative "../apt/version"
 require_relative "../yaml/field_reader"
 require_relative "../yaml/located_document"
@@ -23,8 +24,6 @@ module Relspec
       FILE = OutputTree::PLAN_FILE
       ROOT_KEYS = %w[release target builds].freeze
       BUILD_KEYS = %w[package source version dsc build_depends].freeze
-      # Source names become folder names (results/<source>, logs/<source>.log).
-      SOURCE_NAME = /\A[a-z0-9][a-z0-9.+-]*\z/
       HINT = "plan.yml is written by `relspec compile`: run it again"
 
       Entry = Struct.new(:package, :source, :version, :dsc, :build_depends, keyword_init: true) do
@@ -94,7 +93,8 @@ module Relspec
 
       def entry(build, path, seen)
         source = @fields.text(build, path + ["source"])
-        @fields.fail_at(path + ["source"], "invalid source name #{source.inspect}") unless source.match?(SOURCE_NAME)
+        # source names become folder names (results/<source>, logs/<source>.log)
+        @fields.fail_at(path + ["source"], "invalid source name #{source.inspect}") unless DebianName.valid?(source)
         @fields.fail_at(path + ["source"], "#{source} is listed twice") if seen[source]
         version = @fields.text(build, path + ["version"])
         @fields.fail_at(path + ["version"], "invalid Debian version #{version.inspect}") unless Apt::Version.valid?(version)

@@ -10,6 +10,7 @@ require_relative "../apt/version"
 require_relative "../diagnostic"
 require_relative "../error"
 require_relative "../output_tree"
+require_relative "../debian_name"
 
 module Relspec
   module Builder
@@ -30,8 +31,6 @@ module Relspec
       FILE_KEYS = %w[name sha256 size].freeze
       STATUSES = %w[built failed skipped published].freeze
       SHA256 = /\A[0-9a-f]{64}\z/
-      # Debian policy 5.6.1: at least two characters, lowercase, digits, + - .
-      SOURCE_NAME = /\A[a-z0-9][a-z0-9.+-]+\z/
       HINT = "build-results.yml is written by `relspec build`: delete it and run `relspec build` again for this target"
 
       # One produced file, +name+ relative to the target folder.
@@ -178,7 +177,7 @@ module Relspec
 
         def record(source, fields)
           path = ["packages", source]
-          fail_at(path, "#{source.inspect} is not a Debian source package name") unless source.to_s.match?(SOURCE_NAME)
+          fail_at(path, "#{source.inspect} is not a Debian source package name") unless DebianName.valid?(source)
           fail_at(path, "packages.#{source} must be a mapping") unless fields.is_a?(Hash)
           @fields.known_keys(fields, path, PACKAGE_KEYS)
           status = @fields.text(fields, path + ["status"])

@@ -1,7 +1,7 @@
 # frozen_string_literal: true
 
-require "fileutils"
 require_relative "../error"
+require_relative "../file_lock"
 require_relative "../display_path"
 require_relative "../lock_holder"
 
@@ -28,18 +28,13 @@ module Relspec
       # ("build", "publish") in the refusal the other process gets.
       # +shared+: publishers share it (the repository lock orders them),
       # a build holds it alone.
-      def self.hold(dir, doing, shared: false)
-        FileUtils.mkdir_p(dir)
-        file = File.open(File.join(dir, FILE_NAME), File::RDWR | File::CREAT, 0o644)
-        begin
-          unless file.flock((shared ? File::LOCK_SH : File::LOCK_EX) | File::LOCK_NB)
-            raise Busy, "cannot #{doing} #{DisplayPath.of(dir)}: #{LockHolder.of(file)} is using it; run again when it has finished"
-          end
-
-          yield
-        ensure
-          file.close
+      def self.hold(dir, doing, shared: false, &block)
+        busy = lambda do |file|
+          raise Busy, "cannot #{doing} #{DisplayPath.of(dir)}: #{LockHolder.of(file)} is using it; run again when it has finished"
         end
+        FileLock.hold(dir, FILE_NAME, busy: busy, shared: shared, &block)
+      rescue FileLock::Unavailable => e
+        raise Error, "cannot #{doing} #{DisplayPath.of(dir)}: cannot lock it (#{e.path}: #{e.message})"
       end
     end
   end

@@ -11,7 +11,7 @@ require "rubygems/package"
 require_relative "../atomic_file"
 require_relative "../diagnostic"
 require_relative "../error"
-require_relative "../http/client"
+require_relative "../http/download"
 require_relative "../http/capped_body"
 
 module Relspec
@@ -26,14 +26,13 @@ module Relspec
     # and so into the lock. Delete the cache entry to fetch it again.
     class ArchiveImport
       MAX_BYTES = 1 << 30
-      REDIRECTS = 3
       SCHEMES = %w[http https file].freeze
 
       # +cache+: the folder of fetched archives; +timeout+: seconds per
-      # connection and read.
-      def initialize(cache:, timeout:, client: Http::Client.new(timeout: timeout))
+      # connection and read (--timeout; Http::Download's deadline and retries).
+      def initialize(cache:, timeout:)
         @cache = cache
-        @client = client
+        @download = Http::Download.new(timeout: timeout)
       end
 
       # The package with its version's time and the archive's checksum.
@@ -108,34 +107,23 @@ module Relspec
         fail_with(package, "cannot read the archive #{path}: #{e.message}", "check the package set's url")
       end
 
-      # Follows a few redirects (release archives on forges are served
-      # from elsewhere), to http(s) only.
-      def read_http(package, uri, redirects = REDIRECTS)
-        @client.get(uri) do |response|
-          case response
-          when Net::HTTPOK
-            body = Http::CappedBody.read(response, MAX_BYTES)
-            modified = response["Last-Modified"]
-            [body, modified ? Time.httpdate(modified) : newest_member_time(package, uri, body)]
-          when Net::HTTPRedirection then follow(package, uri, response, redirects)
-          else fail_with(package, "#{uri} answered #{response.code} #{response.message}".strip, "check the package set's url")
+      # Release archives on forges are served from elsewhere: redirects
+      # are followed (Http::Download, as every download of relspec).
+      def read_http(package, uri)
+        @download.get(uri) do |at, response|
+          unless response.is_a?(Net::HTTPOK)
+            fail_with(package, "#{at} answered #{response.code} #{response.message}".strip, "check the package set's url")
           end
+          body = Http::CappedBody.read(response, MAX_BYTES)
+          modified = response["Last-Modified"]
+          [body, modified ? Time.httpdate(modified) : newest_member_time(package, at, body)]
         end
       rescue Http::CappedBody::TooLarge
         fail_with(package, "the archive at #{uri} is larger than #{MAX_BYTES >> 20} MiB", "check the package set's url")
       rescue ArgumentError
         fail_with(package, "#{uri} gives a Last-Modified time that is not an HTTP date", "check the server")
-      rescue SystemCallError, IOError, Timeout::Error, OpenSSL::SSL::SSLError, SocketError => e
-        fail_with(package, "cannot fetch #{uri}: #{e.message}", "check the url and the network")
-      end
-
-      def follow(package, uri, response, redirects)
-        target = response["location"] && uri.merge(response["location"])
-        unless target && %w[http https].include?(target.scheme) && redirects.positive?
-          fail_with(package, "#{uri} redirects to #{response['location'].inspect}, which is not followed",
-                    "use the archive's final url")
-        end
-        read_http(package, target, redirects - 1)
+      rescue Http::Download::Failed => e
+        fail_with(package, "cannot fetch #{e.message}", "check the url and the network")
       end
 
       # Without Last-Modified (forges' generated archives), the newest time

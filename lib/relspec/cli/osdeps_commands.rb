@@ -3,12 +3,13 @@
 require "thor"
 require_relative "strict_commands"
 require_relative "checked_options"
-require_relative "../error"
+require_relative "../osdeps"
 
 module Relspec
   module CLI
     # `relspec osdeps …`: the files that let autoproj workspaces use a
-    # release's binaries (rock-osdeps package set format).
+    # release's binaries (rock-osdeps package set format). Each command is
+    # one call of the use case (lib/relspec/osdeps.rb) and prints its result.
     class OsdepsCommands < Thor
       include CheckedOptions
       include StrictCommands
@@ -30,13 +31,7 @@ module Relspec
       option :from_repository, type: :boolean, default: false, desc: "Only packages the repositories hold"
       option :timeout, type: :numeric, default: 10, desc: "HTTP timeout in seconds"
       def render(path)
-        require_relative "../plan"
-        require_relative "../project"
-        require_relative "../osdeps/files"
-        result = Plan.run(path, timeout: options[:timeout])
-        effective = result.effective
-        dir = Project.new(result.project_root).osdeps_dir(effective.release)
-        written = Osdeps::Files.write_release(result.plan.targets, effective, dir, held_only: options[:from_repository])
+        written = Osdeps.render(path, timeout: options[:timeout], from_repository: options[:from_repository])
         written.written.each { |target, changed| $stderr.puts("#{changed ? 'wrote' : 'unchanged'} #{target}") }
         written.missing.each { |line| $stderr.puts("missing from the repository: #{line}") }
       end
@@ -46,18 +41,8 @@ module Relspec
       option :repo_url, type: :string, desc: "Base URL of the releases (default: the one most releases share)"
       option :public_key, type: :string, desc: "URL of the key that signs the releases"
       def index
-        require_relative "../release_specs"
-        require_relative "../osdeps/release_index"
-        require_relative "../osdeps/files"
-        require_relative "../project"
-        if options[:repo_url] && !Osdeps::IndexCheck.http?(options[:repo_url])
-          raise Error, "--repo-url must be an http(s) URL, not #{options[:repo_url].inspect}"
-        end
-
-        text = Osdeps::ReleaseIndex.render(indexed_releases(spec_library), repo_url: options[:repo_url],
-                                                                           public_key: options[:public_key])
-        target = Project.new(File.dirname(options[:specs])).release_index
-        $stderr.puts("#{Osdeps::Files.write_index(target, text) ? 'wrote' : 'unchanged'} #{target}")
+        written = Osdeps.index(specs: options[:specs], repo_url: options[:repo_url], public_key: options[:public_key])
+        $stderr.puts("#{written.changed ? 'wrote' : 'unchanged'} #{written.path}")
       end
 
       desc "package-set", "Write relspec's autoproj package set for the releases of specs/ (default: build/package-set)"
@@ -72,13 +57,10 @@ module Relspec
       option :specs, type: :string, default: "specs", desc: "The folder of release specs"
       option :out, type: :string, default: "build/package-set", desc: "The package set's folder"
       def package_set
-        require_relative "../release_specs"
-        require_relative "../osdeps/package_set"
-        require_relative "../osdeps/package_set_writer"
-        files = Osdeps::PackageSet.assemble(indexed_releases(spec_library))
-        result = Osdeps::PackageSetWriter.write(options[:out], files)
-        summary = "#{result.written.size} of #{files.size} files written, #{result.removed.size} removed"
-        $stderr.puts(result.changed? ? "wrote #{options[:out]} (#{summary})" : "unchanged #{options[:out]} (#{files.size} files)")
+        written = Osdeps.package_set(specs: options[:specs], out: options[:out])
+        result = written.result
+        summary = "#{result.written.size} of #{written.files} files written, #{result.removed.size} removed"
+        $stderr.puts(result.changed? ? "wrote #{written.out} (#{summary})" : "unchanged #{written.out} (#{written.files} files)")
       end
       map "package-set" => :package_set
 
@@ -99,27 +81,11 @@ module Relspec
       option :index, type: :array, default: [], desc: "Packages files or repository URLs for reverse dependencies"
       option :trusted, type: :boolean, default: false, desc: "Read repository URLs without checking signatures"
       option :keyring, type: :string, desc: "Keyring verifying repository URLs"
+      option :timeout, type: :numeric, default: 10, desc: "HTTP timeout in seconds (repository URLs)"
       option :output, type: :string, default: ".", desc: "Where to write rock-osdeps.osdeps and rock-osdeps.inactive"
       def select
         require_relative "select_command"
         SelectCommand.new(options, err: $stderr).call
-      end
-
-      private
-
-      def spec_library
-        library = ReleaseSpec::Library.new(options[:specs])
-        raise InvalidOption, "#{options[:specs]}/ holds no release spec" if library.names.empty?
-
-        library
-      end
-
-      # The release index's view of every spec (Osdeps::IndexedRelease).
-      def indexed_releases(library)
-        require_relative "../osdeps/indexed_release"
-        library.paths.map do |path|
-          Osdeps::IndexedRelease.from_effective(ReleaseSpec.resolve(path).effective)
-        end
       end
     end
   end

@@ -1,12 +1,12 @@
 # frozen_string_literal: true
 
-require_relative "../osdeps/user_selection"
+require_relative "../osdeps"
 require_relative "../printable"
 
 module Relspec
   module CLI
-    # `relspec osdeps select`: runs Osdeps::UserSelection with the options and
-    # says what it did.
+    # `relspec osdeps select`: runs Osdeps.select (Osdeps::UserSelection) with
+    # the options and says what it did.
     class SelectCommand
       def initialize(options, err:)
         @options = options
@@ -15,10 +15,10 @@ module Relspec
 
       def call
         release = @options[:release]
-        result = Osdeps::UserSelection.call(
+        result = Osdeps.select(
           release: release, arch: @options[:arch], os: @options[:os], data: @options[:data],
           blacklist: @options[:blacklist], index: @options[:index], trusted: @options[:trusted],
-          keyring: @options[:keyring], output: @options[:output],
+          keyring: @options[:keyring], output: @options[:output], timeout: @options[:timeout] || 10,
           differs: lambda do |entry, note|
             @err.puts("#{entry.location}: warning[blacklist-reading]: #{entry.pattern.source.inspect}: #{note}")
           end,

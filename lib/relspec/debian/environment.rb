@@ -4,7 +4,7 @@ require_relative "template"
 require_relative "debhelper"
 require_relative "environment_file"
 require_relative "build_input"
-require_relative "../osdeps/trust"
+require_relative "../environment_rule"
 require_relative "../yaml/writer"
 
 module Relspec
@@ -80,7 +80,7 @@ module Relspec
 
       # The package set's own settings of the package (Catalog::Package#environment)
       # for this prefix: [[type, name, values]]. Only what relspec's package
-      # set accepts gets through (Osdeps::Trust: a documented variable, a
+      # set accepts gets through (EnvironmentRule: a documented variable, a
       # path below the release's prefix or one plain word): a variable it
       # refuses would make it refuse the whole release, a path into the
       # maintainer's workspace ($AUTOPROJ_ROOT) means nothing on a user's
@@ -90,7 +90,7 @@ module Relspec
           values = op.fetch("values").map { |value| value.gsub("$PREFIX", @in.install_dir) }
           entry = { type: op.fetch("type").to_sym, values: values }
           next if values.any? { |value| value.match?(/["$`\\\n]/) }
-          next if Osdeps::Trust.environment(op.fetch("name"), entry, prefix: File.dirname(@in.install_dir))
+          next if EnvironmentRule.problem(op.fetch("name"), entry, prefix: File.dirname(@in.install_dir))
 
           [op.fetch("type"), op.fetch("name"), values]
         end

@@ -1,10 +1,8 @@
 # frozen_string_literal: true
 
-require "digest"
-require "fileutils"
-require "open3"
-require_relative "../atomic_file"
 require_relative "../error"
+require_relative "../reprepro/config"
+require_relative "../reprepro/runner"
 require_relative "binary_index"
 require_relative "folder"
 require_relative "../publish/stale_reprepro_lock"
@@ -22,8 +20,9 @@ module Relspec
       # +targets+: every Target the mirror holds; +sign_with+: a gpg key id.
       def initialize(dir, targets:, sign_with: nil)
         @dir = File.expand_path(dir)
-        @targets = targets
-        @sign_with = sign_with
+        @config = Reprepro::Config.new(label: "relspec mirror", targets: targets, source: false, sign_with: sign_with,
+                                       description: "field mirror of a release and what it needs from %<codename>s")
+        @reprepro = Reprepro::Runner.new(@dir)
       end
 
       # Takes the folder (Folder: one relspec made, never someone else's),
@@ -33,10 +32,7 @@ module Relspec
       # rule, Publish::StaleRepreproLock. The removed lock's path, or nil.
       def configure
         Folder.claim(@dir)
-        conf = File.join(@dir, "conf")
-        FileUtils.mkdir_p(conf)
-        AtomicFile.write(File.join(conf, "distributions"), distributions)
-        AtomicFile.write(File.join(conf, "options"), "waitforlock 30\n")
+        @config.write(File.join(@dir, "conf"))
         begin
           Publish::StaleRepreproLock.clear(@dir)
         rescue SystemCallError => e # a db/lockfile that is a folder, a read-only db/
@@ -60,42 +56,21 @@ module Relspec
 
       # reprepro includedeb of +files+ into +target+'s distribution.
       def include(target, files)
-        files.each_slice(200) { |slice| reprepro("-A", target.arch, "includedeb", target.codename, *slice) }
+        files.each_slice(200) { |slice| @reprepro.includedeb(target.codename, slice, arch: target.arch) }
       end
 
       def remove(target, names)
-        names.each_slice(200) { |slice| reprepro("-A", target.arch, "remove", target.codename, *slice) }
+        names.each_slice(200) { |slice| @reprepro.remove(target.codename, slice, arch: target.arch) }
       end
 
       def export
-        reprepro("export")
-        reprepro("--delete", "clearvanished") if File.directory?(File.join(@dir, "db"))
+        @reprepro.export
+        @reprepro.clearvanished if File.directory?(File.join(@dir, "db"))
       end
 
       # The pool file of +binary+ as the mirror's index names it.
       def pool_file(binary)
         File.join(@dir, binary.filename)
-      end
-
-      private
-
-      def distributions
-        @targets.group_by(&:codename).sort.map do |codename, targets|
-          lines = ["Codename: #{codename}", "Suite: #{codename}", "Label: relspec mirror",
-                   "Architectures: #{targets.map(&:arch).uniq.sort.join(' ')}", "Components: main",
-                   "Description: field mirror of a release and what it needs from #{codename}"]
-          lines << "SignWith: #{@sign_with}" if @sign_with
-          "#{lines.join("\n")}\n"
-        end.join("\n")
-      end
-
-      def reprepro(*args)
-        output, status = Open3.capture2e("reprepro", "--silent", "-b", @dir, *args)
-        return output if status.success?
-
-        raise ToolError, "reprepro #{args.first(4).join(' ')} in #{@dir} failed: #{output.strip.lines.last(3).join.strip}"
-      rescue SystemCallError => e
-        raise ToolError, "cannot run reprepro: #{e.message} (apt-get install reprepro)"
       end
     end
   end

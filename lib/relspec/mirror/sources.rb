@@ -1,8 +1,8 @@
 # frozen_string_literal: true
 
-require "yaml"
 require_relative "binary_index"
-require_relative "../osdeps/trust"
+require_relative "../osdeps/reader"
+require_relative "../osdeps/operating_system"
 require_relative "../apt/fetcher"
 require_relative "../apt/host_lists"
 require_relative "../apt/opening"
@@ -72,32 +72,21 @@ module Relspec
 
       # The Debian names of the release's osdeps file for the target
       # (published beside the repository): inherited packages are in it
-      # although the release's own index does not hold them.
+      # although the release's own index does not hold them. Read as
+      # autoproj on the target's system reads it (Osdeps::Reader), so an
+      # Ubuntu release's entries ("ubuntu,debian") count as a Debian one's.
       def osdeps_names(reader, target)
         path = "osdeps/#{@effective.release}-#{target.arch}.yml"
         bytes = reader.fetcher.fetch(path, max_bytes: 16 * 1024 * 1024)
         return [] unless bytes
 
-        data = YAML.safe_load(bytes, aliases: false)
-        raise RepositoryError, "#{reader.fetcher.url_of(path)}: not an osdeps file" unless data.is_a?(Hash)
+        system = Osdeps::OperatingSystem.new(@effective.distributions.fetch(target.codename).osdeps_type_key.split(","),
+                                             [target.codename])
+        read = Osdeps::Reader.yaml(bytes)
+        read = Osdeps::Reader.resolve(read.value, system) if read.ok?
+        raise RepositoryError, "#{reader.fetcher.url_of(path)}: #{read.reason}" unless read.ok?
 
-        data.values.filter_map { |entry| debian_name(entry, target, reader.fetcher.url_of(path)) }
-      rescue Psych::Exception => e
-        raise RepositoryError, "#{reader.fetcher.url_of(path)}: not YAML (#{e.message})"
-      end
-
-      def debian_name(entry, target, where)
-        debian = entry.is_a?(Hash) && entry["debian"]
-        return nil unless debian.is_a?(Hash)
-
-        key = debian.keys.find { |keys| keys.to_s.split(",").map(&:strip).include?(target.codename) }
-        name = key && debian[key]
-        return nil if name.nil?
-
-        reason = Osdeps::Trust.debian_name(name)
-        raise RepositoryError, "#{where}: #{reason}" if reason
-
-        name
+        read.value.values
       end
 
       def distribution(index, target)

@@ -16,10 +16,10 @@ module Relspec
     module IndexSources
       module_function
 
-      def load(sources, codename:, arch:, trusted:, keyring:)
+      def load(sources, codename:, arch:, trusted:, keyring:, timeout: 10)
         sources.flat_map do |source|
           if source.match?(%r{\Ahttps?://})
-            repository_indices(Apt::Repository.new(Apt::Fetcher.new(source), trusted: trusted, keyring: keyring),
+            repository_indices(Apt::Repository.new(Apt::Fetcher.new(source, timeout: timeout), trusted: trusted, keyring: keyring),
                                codename, arch)
           else
             [Apt::PackageIndex.parse(read_file(source))]

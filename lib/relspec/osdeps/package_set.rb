@@ -1,6 +1,5 @@
 # frozen_string_literal: true
 
-require "yaml"
 require_relative "../yaml/writer"
 require_relative "../apt/package_index"
 require_relative "../diagnostic"
@@ -10,6 +9,7 @@ require_relative "../location"
 require_relative "index_check"
 require_relative "release_index"
 require_relative "trust"
+require_relative "reader"
 
 module Relspec
   module Osdeps
@@ -110,27 +110,12 @@ module Relspec
 
       # An osdeps file of a repository is data from a web server's folder
       # that users' autoproj hands to `apt-get install` as root: each entry
-      # must be {type => {labels => Debian package name}}.
+      # must be {type => {labels => Debian package name}} (Reader).
       def osdeps_problems(path)
         location = Location.file_only(DisplayPath.of(path))
-        data = YAML.safe_load(File.read(path))
-        unless data.is_a?(Hash)
-          return [Diagnostic.error("package-set-osdeps", "is not a mapping of packages", location: location)]
-        end
-
-        data.sort_by { |package, _| package.to_s }.filter_map do |package, entry|
-          next unless (problem = osdeps_entry_problem(entry))
-
-          Diagnostic.error("package-set-osdeps", "#{package}: #{problem}", location: location)
-        end
-      rescue Psych::Exception => e
-        [Diagnostic.error("package-set-osdeps", "is not plain YAML (#{e.message})", location: location)]
-      end
-
-      def osdeps_entry_problem(entry)
-        return "is not a mapping of OS types" unless entry.is_a?(Hash) && entry.values.all?(Hash)
-
-        entry.values.flat_map(&:values).filter_map { |deb| Trust.debian_name(deb) }.first
+        read = Reader.yaml(File.read(path))
+        problems = read.ok? ? Reader.osdeps_problems(read.value) : [read.reason]
+        problems.map { |problem| Diagnostic.error("package-set-osdeps", problem, location: location) }
       end
 
       # The relspec files init.rb needs, paths relative to lib/: the

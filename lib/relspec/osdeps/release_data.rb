@@ -1,16 +1,18 @@
 # frozen_string_literal: true
 
 require_relative "../yaml/located_document"
-require_relative "../release_specs/names"
 require_relative "../diagnostic"
 require_relative "../error"
 require_relative "../printable"
+require_relative "reader"
 
 module Relspec
   module Osdeps
     # The osdeps files of a release and its ancestors, as a package set (or
     # relspec's releases/ folder) holds them: releases.yml for the hierarchy
-    # (depends_on), <release>-<arch>.yml for each release.
+    # (depends_on), <release>-<arch>.yml for each release. Read as the
+    # package set's init.rb reads them (Reader): the release names, and each
+    # Debian name the user's system resolves to, checked.
     class ReleaseData
       def initialize(dir)
         @dir = dir
@@ -19,37 +21,18 @@ module Relspec
       # Release names from the root of the hierarchy down to +release+.
       def lineage(release)
         path = File.join(@dir, "releases.yml")
-        index = load_yaml(path, required: false) || {}
-        raise InvalidInput, [problem("wrong-type", "releases.yml must map release names to entries", path)] \
-          unless index.is_a?(Hash)
-
-        chain = [release]
-        while (parent = parent_of(index, chain.first, path))
-          raise InvalidInput, [problem("release-cycle", "depends_on cycle through #{parent}", path)] if chain.include?(parent)
-
-          chain.unshift(parent)
-        end
-        chain
+        index = checked(Reader.releases(load_yaml(path, required: false) || {}), "release-index", path)
+        checked(Reader.lineage(index, release), "release-index", path)
       end
 
-      def parent_of(index, release, path)
-        entry = index[release]
-        return nil if entry.nil?
-        raise InvalidInput, [problem("wrong-type", "the entry of #{release} must be a mapping", path)] unless entry.is_a?(Hash)
-
-        parent = entry["depends_on"]
-        return nil if parent.nil?
-        return parent if ReleaseSpec::Names.release?(parent)
-
-        raise InvalidInput, [problem("release-name", "#{release} depends_on #{parent.inspect}, which is not a release name", path)]
-      end
-
-      # autoproj package => osdeps entry, ancestors first and later releases
-      # overriding earlier ones.
-      def merged(release, arch)
+      # autoproj package => Debian name for +os+ (an OperatingSystem), the
+      # ancestors' first and later releases overriding earlier ones. A list
+      # of names is kept as the published Rock files have it (Reader).
+      def resolved(release, arch, os)
         lineage(release).each_with_object({}) do |name, merged|
-          data = load_yaml(osdeps_file(name, arch), required: name == release)
-          merged.merge!(data) if data.is_a?(Hash)
+          path = osdeps_file(name, arch)
+          data = load_yaml(path, required: name == release)
+          merged.merge!(checked(Reader.resolve(data, os, lists: true), "osdeps-file", path)) unless data.nil?
         end
       end
 
@@ -60,6 +43,8 @@ module Relspec
 
       private
 
+      # YAML with its positions (duplicate keys refused, file:line), nil
+      # for a missing file that may be missing.
       def load_yaml(path, required:)
         unless File.file?(path)
           return nil unless required
@@ -71,6 +56,12 @@ module Relspec
         raise InvalidInput, document.diagnostics unless document.ok?
 
         document.data
+      end
+
+      def checked(reading, rule, path)
+        return reading.value if reading.ok?
+
+        raise InvalidInput, [problem(rule, reading.reason, path)]
       end
 
       def problem(rule, message, path)

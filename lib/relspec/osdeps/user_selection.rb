@@ -21,17 +21,19 @@ module Relspec
 
       # +data+: the folder of releases.yml and the osdeps files; +os+:
       # autoproj's "names:versions"; +index+: Packages files or repository
-      # URLs for reverse dependencies; +output+: where the files go.
+      # URLs for reverse dependencies (read with +timeout+, --timeout);
+      # +output+: where the files go.
       # Before anything is written, +differs+ is called with each blacklist
       # entry the rock-osdeps package set reads differently (and the note
       # saying how), then +unmatched+ with each entry that matches no package.
-      def call(release:, arch:, os:, data:, blacklist:, index:, trusted:, keyring:, output:, unmatched: nil,
-               differs: nil)
+      def call(release:, arch:, os:, data:, blacklist:, index:, trusted:, keyring:, output:, timeout: 10,
+               unmatched: nil, differs: nil)
         check_names(release, arch, os)
         os = OperatingSystem.parse(os)
-        mapping = resolve(ReleaseData.new(data).merged(release, arch), os)
+        mapping = ReleaseData.new(data).resolved(release, arch, os)
         entries = blacklist ? BlacklistFile.load(blacklist) : []
-        indices = IndexSources.load(index, codename: codename(os), arch: arch, trusted: trusted, keyring: keyring)
+        indices = IndexSources.load(index, codename: codename(os), arch: arch, trusted: trusted, keyring: keyring,
+                                           timeout: timeout)
         selection = Selection.new(mapping, indices, entries)
         entries.each do |entry|
           note = entry.pattern.difference_note(mapping.keys.sort)
@@ -56,11 +58,7 @@ module Relspec
       def codename(os)
         os.versions.find { |version| version.match?(/\A[a-z]+\z/) && version != "default" }
       end
-
-      def resolve(entries, os)
-        entries.filter_map { |package, entry| (deb = os.resolve(entry)) && [package, deb] }.to_h
-      end
-      private_class_method :codename, :resolve
+      private_class_method :codename
     end
   end
 end

@@ -15,7 +15,7 @@ module Relspec
     # (StaleRepreproLock) and removed; one a reprepro holds is waited for.
     class LiveLock
       POLL = 0.5 # seconds between two tries
-      WAIT = 300 # seconds a reprepro's lock is waited for, as long as reprepro waits (RepositoryConfig)
+      WAIT = 300 # seconds a reprepro's lock is waited for, as long as reprepro waits (Reprepro::Config)
 
       # +clock+: monotonic seconds; +pause+: sleeps (both for tests).
       def initialize(repository, wait: WAIT, waiting: nil, clock: -> { Process.clock_gettime(Process::CLOCK_MONOTONIC) },

@@ -17,7 +17,7 @@ module Relspec
       module_function
 
       # +items+: Upload::Item; +published+: the pool paths the database
-      # holds (Reprepro#pool_files). Raises PublishError on conflicts.
+      # holds (Reprepro::Runner#pool_files). Raises PublishError on conflicts.
       def check(repository, items, published:)
         published = published.to_h { |path| [path, true] }
         digests = Hash.new { |hash, path| hash[path] = Digest::SHA256.file(path).hexdigest }

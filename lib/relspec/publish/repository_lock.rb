@@ -1,7 +1,7 @@
 # frozen_string_literal: true
 
-require "fileutils"
 require_relative "../error"
+require_relative "../file_lock"
 require_relative "../lock_holder"
 
 module Relspec
@@ -19,26 +19,10 @@ module Relspec
 
       # Yields once the lock is held; +waiting+ is called once (with who
       # holds it and since when, LockHolder) if another publisher holds it.
-      def hold(repository, waiting: nil)
-        file = open_lock_file(repository)
-        begin
-          unless file.flock(File::LOCK_EX | File::LOCK_NB)
-            waiting&.call(LockHolder.of(file))
-            file.flock(File::LOCK_EX)
-          end
-          yield
-        ensure
-          file.close
-        end
-      end
-
-      def open_lock_file(repository)
-        FileUtils.mkdir_p(repository)
-        File.open(File.join(repository, FILE_NAME), File::RDWR | File::CREAT, 0o644)
-      rescue Errno::EEXIST, Errno::ENOTDIR # mkdir_p's "File exists" where a file is in the way
-        raise PublishError, "cannot lock the repository #{repository}: it, or a folder above it, is a file, not a folder"
-      rescue SystemCallError => e
-        raise PublishError, "cannot lock the repository #{repository}: #{e.message.sub(/ @ .*/, '')}"
+      def hold(repository, waiting: nil, &block)
+        FileLock.hold(repository, FILE_NAME, busy: ->(file) { waiting&.call(LockHolder.of(file)) }, &block)
+      rescue FileLock::Unavailable => e
+        raise PublishError, "cannot lock the repository #{repository}: #{e.message}"
       end
     end
   end

@@ -9,7 +9,7 @@ module Relspec
     # reprepro's own lock is a file, db/lockfile, that it creates on start
     # and deletes on exit: a reprepro killed by a signal it cannot catch
     # (SIGKILL, the OOM killer, a lost machine) leaves it behind, and every
-    # later reprepro on the repository waits for it (RepositoryConfig's
+    # later reprepro on the repository waits for it (Reprepro::Config's
     # waitforlock: 5 minutes) and then fails. A publish holds relspec's own
     # flock (RepositoryLock), so no other relspec publisher runs; what may
     # still hold reprepro's lock is a reprepro started by hand. The lock is

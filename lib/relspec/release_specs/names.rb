@@ -1,5 +1,7 @@
 # frozen_string_literal: true
 
+require_relative "../debian_name"
+
 module Relspec
   module ReleaseSpec
     # The shapes that names must have before relspec lets them become Debian
@@ -9,7 +11,7 @@ module Relspec
       # autoproj package names: path-like segments of letters, digits, _ . + -
       PACKAGE = %r{\A[A-Za-z0-9_.+-]+(/[A-Za-z0-9_.+-]+)*\z}
       # the leading part of Debian package names
-      DEBIAN_PREFIX = /\A[a-z0-9][a-z0-9.+-]*\z/
+      DEBIAN_PREFIX = DebianName::PREFIX
       GEM = /\A[A-Za-z0-9][A-Za-z0-9._-]*\z/
       GEM_VERSION = /\A[0-9]+(\.[0-9A-Za-z]+)*\z/
       CODENAME = /\A[a-z][a-z0-9-]*\z/

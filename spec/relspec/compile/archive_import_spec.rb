@@ -28,7 +28,8 @@ RSpec.describe "archive imports" do
     # bad input: an archive the server does not have, and a package set
     # patch that names a file outside the package
     builder.autobuild("import_package 'external/tarball'\nimport_package 'external/missing'\n" \
-                      "import_package 'external/escape'\nimport_package 'external/level'\nimport_package 'external/back'\n")
+                      "import_package 'external/escape'\nimport_package 'external/level'\nimport_package 'external/back'\n" \
+                      "import_package 'external/slow'\n")
     root = builder.create
     File.write(File.join(root, "autoproj", "evil.patch"), "--- ../../etc/passwd\n+++ ../../etc/passwd\n@@ -1 +1 @@\n-a\n+b\n")
     # made by `diff -ru a/ b/`, given at autobuild's default level 0 (issue 46, case 16)
@@ -41,14 +42,16 @@ RSpec.describe "archive imports" do
         - external/escape: { type: archive, url: "#{@server.url}/tarball-1.2.tar.gz", patches: [$AUTOPROJ_ROOT/autoproj/evil.patch] }
         - external/back: { type: archive, url: "#{@server.url}/back-1.0.tar.gz" }
         - external/level: { type: archive, url: "#{@server.url}/tarball-1.2.tar.gz", patches: [$AUTOPROJ_ROOT/autoproj/level.patch] }
+        - external/slow: { type: archive, url: "#{@server.url}/slow/tarball-1.2.tar.gz" }
     YAML
     # what autoproj's import left: the archive unpacked in the source folder
-    %w[tarball missing escape level back].each do |name|
+    %w[tarball missing escape level back slow].each do |name|
       FileUtils.mkdir_p(File.join(root, "src", "external", name))
       File.write(File.join(root, "src", "external", name, "CMakeLists.txt"), "project(#{name})\n")
     end
     FileUtils.mkdir_p(File.join(@base, "specs"))
-    { "r" => "tarball", "missing" => "missing", "escape" => "escape", "level" => "level", "back" => "back" }.each do |spec, name|
+    { "r" => "tarball", "missing" => "missing", "escape" => "escape", "level" => "level", "back" => "back",
+      "slow" => "slow" }.each do |spec, name|
       File.write(File.join(@base, "specs", "#{spec}.yml"), <<~YAML)
         release: #{spec}
         maintainer: Rock Packaging <rock@example.org>
@@ -107,6 +110,22 @@ RSpec.describe "archive imports" do
                                   "the package's folder")
     expect(run.stderr).not_to match(/backtrace|\.rb:\d/)
     expect(Dir[File.join(@base, "escape", "**", "*.dsc")]).to eq([])
+  end
+
+  # compile's --timeout reaches the archive's download (Http::Download):
+  # each attempt waits --timeout for an answer, three attempts, then one
+  # error naming them, long before the server's 4 s or relspec's default 10 s
+  it "gives up on a server that does not answer after compile's --timeout, three times" do
+    @server.fail(%r{\A/slow/}, :stall, seconds: 4)
+    started = Process.clock_gettime(Process::CLOCK_MONOTONIC)
+    run = relspec("compile", "specs/slow.yml", "--out", "slow", "--timeout", "1", chdir: @base)
+    elapsed = Process.clock_gettime(Process::CLOCK_MONOTONIC) - started
+    expect(run.exit_code).to eq(1), run.stderr
+    url = Regexp.escape("#{@server.url}/slow/tarball-1.2.tar.gz")
+    expect(run.stderr).to match(%r{error\[archive-import\]: external/slow: cannot fetch #{url}: no answer within 1 s per read \(after 3 attempts, [\d.]+ s in all\)})
+    expect(@server.requests.count("/slow/tarball-1.2.tar.gz")).to eq(3)
+    expect(elapsed).to be < 9
+    expect(Dir[File.join(@base, "slow", "**", "*.dsc")]).to eq([])
   end
 
   # Issue 46, case 13: the version followed the archive's time back

@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require "spec_helper"
+require_relative "../../support/http_server"
 
 # `relspec osdeps select` on a real reprepro repository, through the CLI.
 RSpec.describe "relspec osdeps select" do
@@ -151,11 +152,58 @@ RSpec.describe "relspec osdeps select" do
   end
 end
 
+# --timeout reaches the repository URLs select reads (Http::Download, as
+# every download of relspec): a server that never answers costs three waits
+# of --timeout per file asked (InRelease, then Release), not the default's
+# 10 s each (a minute).
+RSpec.describe "relspec osdeps select --timeout" do
+  it "gives up on a repository URL that does not answer within it, three times" do
+    Dir.mktmpdir("relspec-select-timeout") do |dir|
+      server = HttpServer.new(dir)
+      server.fail(%r{/dists/}, :stall, seconds: 4)
+      File.write(File.join(dir, "releases.yml"), "rel: ~\n")
+      File.write(File.join(dir, "rel-amd64.yml"), "base/ok:\n  ubuntu,debian:\n    18.04,bionic: rock-ok\n")
+      started = Process.clock_gettime(Process::CLOCK_MONOTONIC)
+      run = relspec("osdeps", "select", "--release", "rel", "--arch", "amd64", "--os", "ubuntu,debian:18.04,bionic",
+                    "--data", dir, "--index", "#{server.url}/repo", "--trusted", "--timeout", "1", "--output", File.join(dir, "out"))
+      elapsed = Process.clock_gettime(Process::CLOCK_MONOTONIC) - started
+      expect(run.exit_code).to eq(1), run.stderr
+      expect(run.stderr).to include("cannot read the index #{server.url}/repo: #{server.url}/repo/dists/bionic/InRelease: " \
+                                    "no answer within 1 s per read (after 3 attempts")
+      expect(elapsed).to be < 30
+      expect(File.exist?(File.join(dir, "out"))).to be(false)
+    ensure
+      server&.stop
+    end
+  end
+end
+
+# The names a user's system resolves to reach autoproj's `apt-get install`
+# (as root): read as the package set's init.rb reads them (Osdeps::Reader),
+# where select once wrote whatever the file said.
+RSpec.describe "relspec osdeps select with an osdeps file naming no Debian package" do
+  it "refuses it, naming the file and the package, and writes nothing" do
+    Dir.mktmpdir("relspec-select-names") do |dir|
+      File.write(File.join(dir, "releases.yml"), "rel: ~\n")
+      File.write(File.join(dir, "rel-amd64.yml"), "base/ok:\n  ubuntu,debian:\n    18.04,bionic: rock-ok\n" \
+                                                  "base/evil:\n  ubuntu,debian:\n    18.04,bionic: \"-oAPT::Update=x\"\n" \
+                                                  "gem:\n  gem: not_a_debian_name\n")
+      run = relspec("osdeps", "select", "--release", "rel", "--arch", "amd64", "--os", "ubuntu,debian:18.04,bionic",
+                    "--data", dir, "--output", File.join(dir, "out"))
+      expect(run.exit_code).to eq(1)
+      expect(run.stderr).to include("rel-amd64.yml: error[osdeps-file]: base/evil: \"-oAPT::Update=x\" is not a Debian package name")
+      expect(run.stderr).not_to match(/\.rb:\d+:in /)
+      expect(File.exist?(File.join(dir, "out"))).to be(false)
+    end
+  end
+end
+
 RSpec.describe "relspec osdeps select with a malformed releases.yml" do
   {
-    "- rel\n" => "releases.yml must map release names to entries",
-    "rel: base-rel\n" => "the entry of rel must be a mapping",
-    "rel: { depends_on: ../../etc }\n" => 'rel depends_on "../../etc", which is not a release name'
+    "- rel\n" => "releases.yml: error[release-index]: is not a mapping of releases",
+    "rel: base-rel\n" => 'releases.yml: error[release-index]: "rel": is not a mapping',
+    "rel: { depends_on: ../../etc }\n" => 'releases.yml: error[release-index]: "rel": "../../etc" is not a release name',
+    "base: { depends_on: rel }\nrel: { depends_on: base }\n" => "releases.yml: error[release-index]: depends_on cycle through rel"
   }.each do |index, message|
     it "refuses #{index.strip.inspect} with a clear message" do
       Dir.mktmpdir("relspec-releases-yml") do |dir|

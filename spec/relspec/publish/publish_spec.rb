@@ -251,8 +251,8 @@ RSpec.describe "relspec publish" do
     FileUtils.rm_rf(repository)
     # what a publisher killed between reprepro's includedsc and includedeb leaves
     FileUtils.mkdir_p(File.join(repository, "conf"))
-    Relspec::Publish::RepositoryConfig.new(release: "solo", targets: [Relspec::Target.parse(target_name)]).files
-                                      .each { |name, text| File.write(File.join(repository, "conf", name), text) }
+    Relspec::Reprepro::Config.new(label: "solo", description: "solo for %<codename>s", targets: [Relspec::Target.parse(target_name)],
+                                  source: true).write(File.join(repository, "conf"))
     dsc = Dir.glob(File.join(@target_dir, cmake, "*.dsc")).first
     output, status = Open3.capture2e("reprepro", "-b", repository, "includedsc", "bookworm", dsc)
     expect(status).to be_success, output

@@ -42,6 +42,8 @@ RSpec.describe Relspec::Builder::BuildPlan do
     "a build as text" => [[%r{-\n  package: base/a\n(  .*\n)*?(?=-)}, "- oops\n"], 5, "builds.0 must be a mapping"],
     "a dsc outside the folder" => [["dsc: rock-r-base-a/a.dsc", "dsc: ../../etc/passwd"], 9, "is not a plain path"],
     "a source that is no name" => [["source: rock-r-base-a\n", "source: ../x\n"], 7, 'invalid source name "../x"'],
+    # Debian policy 5.6.1: two characters at least, as build-results.yml reads them
+    "a one-character source" => [["source: rock-r-base-a\n", "source: a\n"], 7, 'invalid source name "a"'],
     "an invalid version" => [['"2.0-1~bookworm"', '"2.0 beta"'], 14, 'invalid Debian version "2.0 beta"'],
     "a dependency not listed before" => [["- rock-r-base-a", "- rock-r-base-z"], 17, '"rock-r-base-z" is not a source listed before'],
     "build_depends as a number" => [["build_depends: []", "build_depends: 3"], 10, "must be a list of source names"],

@@ -3,9 +3,10 @@
 require_relative "../unit_helper"
 require "relspec/builder/target_lock"
 
-# One build of a target folder at a time; the second is refused naming the
-# holder and since when (issue 46, case 16). The holder here is this process
-# through a first hold (flocks of two open files exclude each other).
+# One build of a target folder at a time, on Relspec::FileLock; the second
+# is refused naming the holder and since when (issue 46, case 16). The
+# holder here is this process through a first hold (flocks of two open
+# files exclude each other).
 RSpec.describe Relspec::Builder::TargetLock do
   it "refuses a second holder at once, naming the first one's pid and start, and lets publishers share" do
     Dir.mktmpdir("target-lock") do |dir|
@@ -15,6 +16,15 @@ RSpec.describe Relspec::Builder::TargetLock do
       end
       shared = described_class.hold(dir, "publish", shared: true) { described_class.hold(dir, "publish", shared: true) { :both } }
       expect(shared).to eq(:both)
+      expect(described_class.hold(dir, "build") { :built }).to eq(:built)
+    end
+  end
+
+  it "words a folder it cannot lock as a user error" do
+    Dir.mktmpdir do |dir|
+      File.write(File.join(dir, "file"), "")
+      expect { described_class.hold(File.join(dir, "file"), "build") { nil } }
+        .to raise_error(Relspec::Error, /\Acannot build .*file: cannot lock it \(.*file: it, or a folder above it, is a file, not a folder\)\z/)
     end
   end
 end

@@ -51,6 +51,22 @@ RSpec.describe Relspec::Catalog::ArchiveImport, :tmpdir do
     end
   end
 
+  # a real server on 127.0.0.1 (a thread): an answer that may pass is asked
+  # again (Http::Download), as every download of relspec
+  it "asks again after a 503 and gets the archive" do
+    served = File.join(@dir, "served")
+    FileUtils.mkdir_p(served)
+    File.binwrite(File.join(served, "x-1.0.tar.gz"), "bytes")
+    File.utime(Time.utc(2021), Time.utc(2021), File.join(served, "x-1.0.tar.gz"))
+    server = HttpServer.new(served)
+    server.fail(%r{\A/x}, :unavailable_once)
+    resolved = import.resolve(package("#{server.url}/x-1.0.tar.gz"))
+    expect(server.requests).to eq(["/x-1.0.tar.gz"] * 2)
+    expect([resolved.vcs.sha256, resolved.commit_time]).to eq([Digest::SHA256.hexdigest("bytes"), "2021-01-01T00:00:00Z"])
+  ensure
+    server&.stop
+  end
+
   # a real server on 127.0.0.1 (a thread): a redirect, then no Last-Modified
   it "follows a redirect and, without Last-Modified, takes the newest time of the archive's files" do
     served = File.join(@dir, "served", "redir")
