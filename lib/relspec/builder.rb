@@ -16,6 +16,7 @@ require_relative "builder/tool"
 require_relative "builder/unlinked_path"
 require_relative "builder/staged_results"
 require_relative "abi/dumper"
+require_relative "builder/interface_verdicts"
 require_relative "builder/host_backend"
 require_relative "builder/sbuild_backend"
 require_relative "builder/slurm/cluster"
@@ -144,9 +145,10 @@ module Relspec
         @listener&.start(target, plan.entries.size, done.size)
         local = Mutex.new
         debs = done.flat_map { |source| debs_of(dir, results[source]) }
+        verdicts = InterfaceVerdicts.of(results, plan.entries, dir)
         on_start = ->(entry) { @listener&.building(entry) }
         on_done = lambda do |outcome|
-          record(results, dir, outcome, digests[outcome.entry.source])
+          record(results, dir, outcome, digests[outcome.entry.source], verdicts)
           results.write(backend: backend.name)
           @listener&.finished(outcome)
         end
@@ -159,7 +161,8 @@ module Relspec
                    else
                      Scheduler.new(plan.entries, jobs: @jobs, keep_going: @keep_going, done: done)
                               .run(on_start: on_start, on_done: on_done) do |entry|
-                       built = build_one(plan, entry, target, repositories, dir, backend, local.synchronize { debs.dup })
+                       built = build_one(plan, entry, target, repositories, dir, backend, local.synchronize { debs.dup },
+                                         verdicts)
                        local.synchronize { debs.concat(built.grep(/\.u?deb\z/)) }
                        built
                      end
@@ -181,12 +184,16 @@ module Relspec
 
       # Builds +entry+ into a staging folder that replaces its previous
       # results only on success (StagedResults); +debs+: the .debs built so
-      # far in this run. Returns the new files at their final paths.
-      def build_one(plan, entry, target, repositories, dir, backend, debs)
+      # far in this run; +verdicts+: InterfaceVerdicts, which compares the
+      # new files with the ones they replace before they do. Returns the
+      # new files at their final paths.
+      def build_one(plan, entry, target, repositories, dir, backend, debs, verdicts)
         staged = StagedResults.new(dir, entry.source)
         request = request_for(plan, entry, target, repositories, debs, dir, staged.prepare)
         files = backend.build(request)
-        staged.settle(files + abi_dumps(request, files))
+        files += abi_dumps(request, files)
+        verdicts.decide(entry, files)
+        staged.settle(files)
       end
 
       # +output_dir+: where the build puts its files (StagedResults#staging).
@@ -197,7 +204,8 @@ module Relspec
                     target: target, repositories: repositories, local_debs: debs, output_dir: output_dir, log: log)
       end
 
-      def record(results, dir, outcome, dsc_sha256)
+      # +verdicts+: the InterfaceVerdicts of the run.
+      def record(results, dir, outcome, dsc_sha256, verdicts)
         entry = outcome.entry
         started = outcome.status != :skipped
         files = outcome.status == :built ? outcome.value.map { |file| BuildResults::Produced.of(dir, relative(dir, file)) } : []
@@ -205,7 +213,8 @@ module Relspec
                          source: entry.source, package: entry.package, version: entry.version, dsc_sha256: dsc_sha256,
                          status: outcome.status.to_s,
                          duration: started ? outcome.duration : nil, log: started ? "logs/#{entry.source}.log" : nil,
-                         reason: outcome.reason&.gsub("#{dir}/", ""), files: files.freeze
+                         reason: outcome.reason&.gsub("#{dir}/", ""), files: files.freeze,
+                         interface: outcome.status == :built ? verdicts[entry.source] : nil
                        ))
       end
 

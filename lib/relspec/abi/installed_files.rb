@@ -1,8 +1,8 @@
 # frozen_string_literal: true
 
 require "digest"
-require "open3"
 require "rubygems/package"
+require "tempfile"
 require_relative "../error"
 require_relative "../frozen"
 require_relative "dumper"
@@ -13,8 +13,9 @@ module Relspec
     # binary packages put on a machine, by path (without the leading "./"),
     # read from the .debs' data archives (`dpkg-deb --fsys-tarfile`), not
     # unpacked. The debug-symbol packages and usr/lib/debug are left out
-    # (nothing builds against them), and so is each package's Debian
-    # changelog, which changes with every version by design.
+    # (nothing builds against them), and so is each package's changelog
+    # (changelog.Debian.gz, or changelog.gz of a native package), which
+    # changes with every version by design.
     module InstalledFiles
       # +kind+: :file, :link (+content+: its target) or :library (a shared
       # library, as Dumper finds them: an ELF file named lib*.so*; compared
@@ -23,7 +24,7 @@ module Relspec
       Entry = Struct.new(:kind, :content, keyword_init: true)
 
       DEBUG_PACKAGE = /-dbgsym_[^_]+_[^_]+\.d?deb\z/
-      LEFT_OUT = %r{\A(?:usr/lib/debug/|usr/share/doc/[^/]+/changelog\.Debian(?:\.gz)?\z)}
+      LEFT_OUT = %r{\A(?:usr/lib/debug/|usr/share/doc/[^/]+/changelog(?:\.Debian)?(?:\.gz)?\z)}
       # Anything larger than this in one package is not a Rock library.
       MAX_FILE = 2 * 1024 * 1024 * 1024
 
@@ -32,17 +33,25 @@ module Relspec
       # Path => Entry of every file the .debs +debs+ install, frozen.
       def of(debs)
         entries = debs.reject { |deb| File.basename(deb).match?(DEBUG_PACKAGE) }.sort.each_with_object({}) do |deb, out|
-          Open3.popen3("dpkg-deb", "--fsys-tarfile", deb) do |stdin, stdout, stderr, wait|
-            stdin.close
-            error = Thread.new { stderr.read }
-            out.merge!(from_tar(stdout, source: deb))
-            stdout.read # the archive's padding
-            raise ToolError, "dpkg-deb --fsys-tarfile #{deb} failed: #{error.value.strip}" unless wait.value.success?
+          # Gem's tar reader seeks: the archive goes through a file
+          Tempfile.create("relspec-data-tar") do |tar|
+            extract(deb, tar)
+            out.merge!(from_tar(tar, source: deb))
           end
         end
         Frozen.deep(entries)
       rescue Errno::ENOENT
         raise ToolError, "cannot run dpkg-deb (is dpkg installed?)"
+      end
+
+      def extract(deb, tar)
+        Tempfile.create("relspec-dpkg-deb") do |error|
+          pid = Process.spawn("dpkg-deb", "--fsys-tarfile", deb, out: tar, err: error)
+          unless Process.wait2(pid).last.success?
+            raise ToolError, "dpkg-deb --fsys-tarfile #{deb} failed: #{File.read(error.path).strip}"
+          end
+        end
+        tar.rewind
       end
 
       # Path => Entry of the tar stream +io+ (a .deb's data archive, as

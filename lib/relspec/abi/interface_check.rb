@@ -38,6 +38,10 @@ module Relspec
       def decide(package, old:, new:)
         paths = (old.files.keys | new.files.keys).sort
         evidence = paths.map { |path| compare_entry(path, old, new) }
+        # nothing read is nothing proven: a side that installs nothing (no
+        # .deb found) never keeps the dependents
+        empty = { "old" => old, "new" => new }.select { |_, side| side.files.empty? }.keys
+        evidence << evidence("", :bytes, :no_files, "the #{empty.join(' and ')} build installs nothing") unless empty.empty?
         InterfaceVerdict.of(package: package, version: new.version, against: old.version, evidence: evidence)
       end
 

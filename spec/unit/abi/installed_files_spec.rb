@@ -33,6 +33,7 @@ RSpec.describe Relspec::Abi::InstalledFiles do
   it "leaves out the Debian changelog, which moves with every version, and the debug files" do
     io = tar do |writer|
       writer.add_file_simple("./usr/share/doc/rock-r-a/changelog.Debian.gz", 0o644, 1) { |file| file.write("x") }
+      writer.add_file_simple("./usr/share/doc/native/changelog.gz", 0o644, 1) { |file| file.write("x") }
       writer.add_file_simple("./usr/share/doc/rock-r-a/copyright", 0o644, 1) { |file| file.write("c") }
       writer.add_file_simple("./usr/lib/debug/.build-id/ab/cd.debug", 0o644, 1) { |file| file.write("d") }
     end

@@ -5,14 +5,16 @@ require "relspec/abi/interface_check"
 require "relspec/abi/verdict"
 
 RSpec.describe Relspec::Abi::InterfaceCheck do
-  Entry = Relspec::Abi::InstalledFiles::Entry
-
   def side(version, files, dumps = {})
     described_class::Side.new(version: version, files: files, dumps: dumps)
   end
 
+  def entry(kind:, content:)
+    Relspec::Abi::InstalledFiles::Entry.new(kind: kind, content: content)
+  end
+
   def file(content)
-    Entry.new(kind: :file, content: content)
+    entry(kind: :file, content: content)
   end
 
   # abidiff stands in as a table: this spec is about the decision; the
@@ -29,8 +31,8 @@ RSpec.describe Relspec::Abi::InterfaceCheck do
   let(:header) { { "opt/r/include/a.h" => file("h1") } }
 
   it "keeps the interface when every file is identical and compares no dump for identical library bytes" do
-    files = header.merge("opt/r/lib/liba.so.1" => Entry.new(kind: :library, content: "l1"),
-                         "opt/r/lib/liba.so" => Entry.new(kind: :link, content: "liba.so.1"))
+    files = header.merge("opt/r/lib/liba.so.1" => entry(kind: :library, content: "l1"),
+                         "opt/r/lib/liba.so" => entry(kind: :link, content: "liba.so.1"))
     checker, calls = check
     verdict = checker.decide("base/a", old: side("1-1", files), new: side("1-2", files))
     expect(verdict.unchanged?).to be(true)
@@ -43,8 +45,8 @@ RSpec.describe Relspec::Abi::InterfaceCheck do
   end
 
   it "asks abidiff about a library whose bytes moved: unchanged and compatible keep, changed and incompatible do not" do
-    old_files = header.merge("opt/r/lib/liba.so.1" => Entry.new(kind: :library, content: "l1"))
-    new_files = header.merge("opt/r/lib/liba.so.1" => Entry.new(kind: :library, content: "l2"))
+    old_files = header.merge("opt/r/lib/liba.so.1" => entry(kind: :library, content: "l1"))
+    new_files = header.merge("opt/r/lib/liba.so.1" => entry(kind: :library, content: "l2"))
     { "unchanged" => true, "compatible" => true, "changed" => false, "incompatible" => false }.each do |name, kept|
       checker, calls = check(%w[old.gz new.gz] => name)
       verdict = checker.decide("base/a", old: side("1-1", old_files, "liba.so.1" => "old.gz"),
@@ -57,8 +59,8 @@ RSpec.describe Relspec::Abi::InterfaceCheck do
   end
 
   it "changes the interface when a library has no dump to compare on either side" do
-    old_files = { "lib/liba.so.1" => Entry.new(kind: :library, content: "l1") }
-    new_files = { "lib/liba.so.1" => Entry.new(kind: :library, content: "l2") }
+    old_files = { "lib/liba.so.1" => entry(kind: :library, content: "l1") }
+    new_files = { "lib/liba.so.1" => entry(kind: :library, content: "l2") }
     checker, calls = check
     verdict = checker.decide("base/a", old: side("1-1", old_files), new: side("1-2", new_files, "liba.so.1" => "n.gz"))
     expect(verdict.changes.map(&:to_s)).to eq(["lib/liba.so.1: no dump (no ABI dump of the old build)"])
@@ -66,13 +68,19 @@ RSpec.describe Relspec::Abi::InterfaceCheck do
   end
 
   it "changes the interface for a file that differs, is added or removed, a link that moved or a file that became a link" do
-    old_files = { "h/a.h" => file("1"), "h/gone.h" => file("g"), "lib/liba.so" => Entry.new(kind: :link, content: "liba.so.1"),
+    old_files = { "h/a.h" => file("1"), "h/gone.h" => file("g"), "lib/liba.so" => entry(kind: :link, content: "liba.so.1"),
                   "share/x" => file("x") }
-    new_files = { "h/a.h" => file("2"), "h/new.h" => file("n"), "lib/liba.so" => Entry.new(kind: :link, content: "liba.so.2"),
-                  "share/x" => Entry.new(kind: :link, content: "y") }
+    new_files = { "h/a.h" => file("2"), "h/new.h" => file("n"), "lib/liba.so" => entry(kind: :link, content: "liba.so.2"),
+                  "share/x" => entry(kind: :link, content: "y") }
     verdict = check.first.decide("base/a", old: side("1-1", old_files), new: side("1-2", new_files))
     expect(verdict.changes.map { |item| [item.path, item.outcome] }).to eq(
       [["h/a.h", :differs], ["h/gone.h", :removed], ["h/new.h", :added], ["lib/liba.so", :differs], ["share/x", :kind]]
     )
+  end
+
+  it "never keeps the dependents when a side installs nothing: nothing read is nothing proven" do
+    verdict = check.first.decide("base/a", old: side("1-1", {}), new: side("1-2", {}))
+    expect(verdict.unchanged?).to be(false)
+    expect(verdict.changes.map(&:to_s)).to eq([": no files (the old and new build installs nothing)"])
   end
 end
