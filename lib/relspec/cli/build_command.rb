@@ -71,7 +71,7 @@ module Relspec
       def print_table(report)
         rows = report.results.entries.map do |record|
           [record.source, record.version.to_s, record.status, record.duration ? format("%.1f s", record.duration) : "",
-           record.reason.to_s.lines.first.to_s.strip]
+           (record.reason || interface_text(record.interface)).to_s.lines.first.to_s.strip]
         end
         @io.puts("#{report.target}: #{count(report, :built)} built, #{report.reused} already built, " \
                  "#{count(report, :failed)} failed, #{count(report, :skipped)} skipped (#{report.dir})")
@@ -81,6 +81,14 @@ module Relspec
         rows.each do |row|
           @io.puts("  #{row.first(4).each_with_index.map { |cell, i| cell.ljust(widths[i]) }.join('  ')}  #{row[4]}".rstrip)
         end
+      end
+
+      # The early cutoff's verdict of a build (docs/abi.md), in its row.
+      def interface_text(interface)
+        return nil unless interface
+
+        text = "interface #{interface.verdict} from #{interface.against}"
+        interface.changes.empty? ? text : "#{text}: #{interface.changes.first}"
       end
 
       def count(report, status)
