@@ -4,13 +4,15 @@ require "spec_helper"
 require "yaml"
 require_relative "../../support/build_release"
 
-# `relspec build` decides the early cutoff's verdict of a package when its
-# build finishes (docs/abi.md, "Early cutoff"): the new build against the
-# one it replaces, still in the target folder, recorded with its evidence
-# in build-results.yml. A library's new version from an overlay that
-# changes a function body leaves its interface unchanged; one that changes
-# its header changes it.
-RSpec.describe "relspec build: the early cutoff's verdict of each rebuilt package" do
+# The early cutoff on a published release (docs/abi.md, "Early cutoff"):
+# base/lib, a C library, and base/user, which includes its header and
+# links it, built with the host backend and published into a real reprepro
+# repository. A new version of base/lib from an overlay that changes a
+# function body: `relspec plan` names base/user a candidate that keeps its
+# published version, and `relspec build` decides base/lib's interface
+# unchanged against the build it replaces, recorded with its evidence in
+# build-results.yml. One that changes its header: changed.
+RSpec.describe "the early cutoff on a published release", order: :defined do
   before(:all) do
     @dir = Dir.mktmpdir("relspec-build-cutoff")
     @release = BuildRelease.new(@dir, "ec")
@@ -18,41 +20,59 @@ RSpec.describe "relspec build: the early cutoff's verdict of each rebuilt packag
                                         "install(TARGETS cut LIBRARY DESTINATION lib)\ninstall(FILES cut.h DESTINATION include)",
                                  files: { "cut.c" => "#include \"cut.h\"\nint cut_value(void) { return 42; }\n",
                                           "cut.h" => "int cut_value(void);\n" })
-    @release.compile
-    build!
+    @release.package("base/user", dependencies: ["base/lib"])
+    @release.compile(spec: "repository: { path: ../repos/ec, trusted: true }\n")
+    run!("build", "specs/ec.yml", "--out", "out", "--backend", "host")
+    run!("publish", "specs/ec.yml", "--out", "out")
+    @first = record("base/lib")
   end
 
   after(:all) { FileUtils.rm_rf(@dir) }
 
-  def build!
-    run = relspec("build", "specs/ec.yml", "--out", "out", "--backend", "host", chdir: @dir)
-    raise "relspec build: #{run.stdout}#{run.stderr}" unless run.exit_code.zero?
+  def run!(*args)
+    run = relspec(*args, chdir: @dir)
+    raise "relspec #{args.join(' ')}: #{run.stdout}#{run.stderr}" unless run.exit_code.zero?
 
-    YAML.safe_load(File.read(File.join(@release.target_dir, "build-results.yml")))["packages"][@release.source("base/lib")]
+    run
+  end
+
+  def record(package)
+    YAML.safe_load(File.read(File.join(@release.target_dir, "build-results.yml")))["packages"][@release.source(package)]
   end
 
   # A new version of base/lib from an overlay file over the source.
-  def rebuild_with(path, content)
+  def change(path, content)
     overlay = File.join(@dir, "overlays", "base", "lib", "files", path)
     FileUtils.mkdir_p(File.dirname(overlay))
     File.write(overlay, content)
-    compile = relspec("compile", "specs/ec.yml", "--out", "out", chdir: @dir)
-    raise "relspec compile: #{compile.stderr}" unless compile.exit_code.zero?
-
-    build!
   end
 
-  it "records no verdict for a first build, unchanged for a body change and changed for a header change" do
-    first = YAML.safe_load(File.read(File.join(@release.target_dir, "build-results.yml")))["packages"][@release.source("base/lib")]
-    expect(first).not_to have_key("interface")
+  it "records no verdict for a first build" do
+    expect(@first).not_to have_key("interface")
+  end
 
-    body = rebuild_with("cut.c", "#include \"cut.h\"\nint cut_value(void) { return 43; }\n")
-    expect(body["version"]).not_to eq(first["version"])
-    expect(body["interface"]).to include("against" => first["version"], "verdict" => "unchanged", "changes" => [])
+  it "names the dependent a candidate before building, and decides the body change left the interface unchanged" do
+    change("cut.c", "#include \"cut.h\"\nint cut_value(void) { return 43; }\n")
+    plan = run!("plan", "specs/ec.yml").stdout
+    expect(plan).to match(%r{base/user +rock-ec-base-user \S+-2\n    missing in all ancestors\n    early cutoff candidate: \S+-1~bookworm stays if the interface of base/lib does not change\n})
+    expect(plan).not_to match(%r{base/lib .*\n.*\n    early cutoff})
+
+    run!("compile", "specs/ec.yml", "--out", "out")
+    run!("build", "specs/ec.yml", "--out", "out", "--backend", "host")
+    body = record("base/lib")
+    expect(body["version"]).not_to eq(@first["version"])
+    expect(body["interface"]).to include("against" => @first["version"], "verdict" => "unchanged", "changes" => [])
     expect(body["interface"]["compared"]).to be >= 3 # the header, the library, the copyright
+  end
 
-    header = rebuild_with("cut.h", "int cut_value(void);\nint cut_other(void);\n")
-    expect(header["interface"]).to include("against" => body["version"], "verdict" => "changed")
+  it "decides a header change changed the interface, naming the header" do
+    before = record("base/lib")
+    change("cut.h", "int cut_value(void);\nint cut_other(void);\n")
+    run!("compile", "specs/ec.yml", "--out", "out")
+    build = run!("build", "specs/ec.yml", "--out", "out", "--backend", "host")
+    header = record("base/lib")
+    expect(header["interface"]).to include("against" => before["version"], "verdict" => "changed")
     expect(header["interface"]["changes"]).to eq(["opt/rock/ec/rock-ec-base-lib/include/cut.h: differs"])
+    expect(build.stdout).to include("interface changed from #{before['version']}: opt/rock/ec/rock-ec-base-lib/include/cut.h: differs")
   end
 end
