@@ -214,7 +214,8 @@ module Relspec
                          status: outcome.status.to_s,
                          duration: started ? outcome.duration : nil, log: started ? "logs/#{entry.source}.log" : nil,
                          reason: outcome.reason&.gsub("#{dir}/", ""), files: files.freeze,
-                         interface: outcome.status == :built ? verdicts[entry.source] : nil
+                         interface: outcome.status == :built ? verdicts[entry.source] : nil,
+                         cutoff: outcome.status == :built ? verdicts.cutoff(entry.source) : nil
                        ))
       end
 

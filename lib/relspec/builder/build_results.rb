@@ -25,7 +25,9 @@ module Relspec
       FORMAT_KEY = "relspec_build_results"
       FORMAT_VERSION = 1
       ROOT_KEYS = [FORMAT_KEY, "release", "target", "backend", "packages"].freeze
-      PACKAGE_KEYS = %w[package version dsc_sha256 status duration log reason files interface].freeze
+      PACKAGE_KEYS = %w[package version dsc_sha256 status duration log reason files interface cutoff].freeze
+      CUTOFF_KEYS = %w[keeps verdict reason].freeze
+      CUTOFF_VERDICTS = %w[keep rebuild].freeze
       FILE_KEYS = %w[name sha256 size].freeze
       INTERFACE_KEYS = %w[against verdict compared changes].freeze
       INTERFACE_VERDICTS = %w[unchanged changed].freeze
@@ -76,6 +78,20 @@ module Relspec
         end
       end
 
+      # What the early cutoff decided for a candidate of the plan
+      # (BuildPlan::Cutoff): "keep" its published version +keeps+ or
+      # "rebuild", with the +reason+. The build still rebuilds it today
+      # (docs/abi.md): the record says what the cutoff would save.
+      Cutoff = Struct.new(:keeps, :verdict, :reason, keyword_init: true) do
+        def keep?
+          verdict == "keep"
+        end
+
+        def to_h
+          { "keeps" => keeps, "verdict" => verdict, "reason" => reason }
+        end
+      end
+
       # One source package's result. +files+: Produced, empty unless built;
       # +dsc_sha256+: the SHA256 of the .dsc it was built from (nil in
       # results written before relspec recorded it: such a build is done
@@ -83,7 +99,7 @@ module Relspec
       # +interface+: an Interface when the build replaced an earlier one
       # of another version, else nil.
       Record = Struct.new(:source, :package, :version, :dsc_sha256, :status, :duration, :log, :reason, :files,
-                          :interface, keyword_init: true) do
+                          :interface, :cutoff, keyword_init: true) do
         def built?
           status == "built"
         end
@@ -92,7 +108,7 @@ module Relspec
           { "package" => package, "version" => version, "dsc_sha256" => dsc_sha256, "status" => status,
             "duration" => duration,
             "log" => log, "reason" => reason, "files" => files.empty? ? nil : files.map(&:to_h),
-            "interface" => interface&.to_h }.compact
+            "interface" => interface&.to_h, "cutoff" => cutoff&.to_h }.compact
         end
       end
 
@@ -218,7 +234,19 @@ module Relspec
                      duration: duration(fields, path + ["duration"]),
                      log: fields["log"].nil? ? nil : @fields.plain_path(fields, path + ["log"]),
                      reason: @fields.optional_text(fields, path + ["reason"]), files: files.freeze,
-                     interface: interface(fields, path + ["interface"])).freeze
+                     interface: interface(fields, path + ["interface"]), cutoff: cutoff(fields, path + ["cutoff"])).freeze
+        end
+
+        def cutoff(fields, path)
+          data = fields[path.last]
+          return nil if data.nil?
+
+          fail_at(path, "#{@fields.describe(path)} must be a mapping of keeps, verdict and reason") unless data.is_a?(Hash)
+          @fields.known_keys(data, path, CUTOFF_KEYS)
+          verdict = @fields.text(data, path + ["verdict"])
+          fail_at(path + ["verdict"], "verdict #{verdict.inspect} is not one of #{CUTOFF_VERDICTS.join(', ')}") \
+            unless CUTOFF_VERDICTS.include?(verdict)
+          Cutoff.new(keeps: version(data, path + ["keeps"]), verdict: verdict, reason: @fields.text(data, path + ["reason"])).freeze
         end
 
         def interface(fields, path)

@@ -17,28 +17,36 @@ module Relspec
       # The verdicts of a run building +entries+ (plan entries) over
       # +results+ (BuildResults, as the run found them) in +dir+.
       def self.of(results, entries, dir)
-        new(entries.to_h { |entry| [entry.source, results[entry.source]] }, dir)
+        new(entries.to_h { |entry| [entry.source, results[entry.source]] }, dir, entries: entries)
       end
 
       # +previous+: source => BuildResults::Record (or nil) before the run;
-      # +dir+: the target folder; +compare+: how two dumps are compared.
-      def initialize(previous, dir, compare: Abi::Comparison.method(:compare))
+      # +dir+: the target folder; +compare+: how two dumps are compared;
+      # +entries+: the plan's entries (their build_depends give each
+      # build's closure, their cutoff the early cutoff's candidates).
+      def initialize(previous, dir, compare: Abi::Comparison.method(:compare), entries: [])
         @previous = previous
         @dir = dir
         @check = Abi::InterfaceCheck.new(compare: compare)
+        @entries = entries.to_h { |entry| [entry.source, entry] }
         @verdicts = {}
+        @cutoffs = {}
         @lock = Mutex.new
       end
 
       # Decides the verdict of +entry+'s new build, whose produced files
-      # are +files+ (paths), and keeps it for #[]; nil when there is
-      # nothing to compare.
+      # are +files+ (paths), and keeps it for #[] (nil when there is
+      # nothing to compare); for a candidate, what the early cutoff decides
+      # (#cutoff).
       def decide(entry, files)
         previous = @previous[entry.source]
-        return nil unless comparable?(previous, entry)
-
-        interface = interface_of(entry, previous, files)
-        @lock.synchronize { @verdicts[entry.source] = interface }
+        interface = comparable?(previous, entry) ? interface_of(entry, previous, files) : nil
+        cutoff = entry.cutoff && cutoff_of(entry)
+        @lock.synchronize do
+          @verdicts[entry.source] = interface
+          @cutoffs[entry.source] = cutoff
+        end
+        interface
       end
 
       # The verdict decided for +source+ in this run, or nil.
@@ -46,11 +54,57 @@ module Relspec
         @lock.synchronize { @verdicts[source] }
       end
 
+      # What the early cutoff decided for the candidate +source+ in this
+      # run (a BuildResults::Cutoff), or nil.
+      def cutoff(source)
+        @lock.synchronize { @cutoffs[source] }
+      end
+
+      # The sources of the plan +source+ needs built first, directly or
+      # through others.
+      def closure(source, seen = {})
+        (@entries[source]&.build_depends || []).each do |need|
+          next if seen[need]
+
+          seen[need] = true
+          closure(need, seen)
+        end
+        seen.keys.sort
+      end
+
       def comparable?(previous, entry)
         !!previous&.built? && previous.version != entry.version && previous.files.all? { |file| file.intact?(@dir) }
       end
 
       private
+
+      # Keep when every build of the candidate's closure left its
+      # interface unchanged (its verdict, of this run or of the earlier run
+      # that built it at its planned version) or is kept itself: then
+      # nothing the candidate builds against changed, also through the
+      # headers of a dependency's dependency.
+      def cutoff_of(entry)
+        changed = closure(entry.source).find { |source| !unchanged?(source) }
+        reason = if changed
+                   verdict = interface(changed)
+                   verdict ? "the interface of #{changed} changed" : "#{changed} has no verdict to go by"
+                 else
+                   "the interface of #{entry.cutoff.because.join(', ')} did not change"
+                 end
+        BuildResults::Cutoff.new(keeps: entry.cutoff.keeps, verdict: changed ? "rebuild" : "keep", reason: reason).freeze
+      end
+
+      def unchanged?(source)
+        @lock.synchronize { @cutoffs[source]&.keep? } || !!interface(source)&.unchanged?
+      end
+
+      def interface(source)
+        found = @lock.synchronize { @verdicts[source] }
+        return found if found
+
+        previous = @previous[source]
+        previous&.version == @entries[source]&.version ? previous&.interface : nil
+      end
 
       def interface_of(entry, previous, files)
         old = Abi::InterfaceCheck::Side.of(previous.version, previous.files.map { |file| File.join(@dir, file.name) })

@@ -71,7 +71,7 @@ module Relspec
       def print_table(report)
         rows = report.results.entries.map do |record|
           [record.source, record.version.to_s, record.status, record.duration ? format("%.1f s", record.duration) : "",
-           (record.reason || interface_text(record.interface)).to_s.lines.first.to_s.strip]
+           (record.reason || cutoff_text(record) || interface_text(record.interface)).to_s.lines.first.to_s.strip]
         end
         @io.puts("#{report.target}: #{count(report, :built)} built, #{report.reused} already built, " \
                  "#{count(report, :failed)} failed, #{count(report, :skipped)} skipped (#{report.dir})")
@@ -81,6 +81,14 @@ module Relspec
         rows.each do |row|
           @io.puts("  #{row.first(4).each_with_index.map { |cell, i| cell.ljust(widths[i]) }.join('  ')}  #{row[4]}".rstrip)
         end
+      end
+
+      # What the early cutoff decided for a candidate (docs/abi.md).
+      def cutoff_text(record)
+        cutoff = record.cutoff
+        return nil unless cutoff
+
+        cutoff.keep? ? "early cutoff: keeps #{cutoff.keeps}: #{cutoff.reason}" : "early cutoff: rebuilt: #{cutoff.reason}"
       end
 
       # The early cutoff's verdict of a build (docs/abi.md), in its row.

@@ -25,6 +25,7 @@ RSpec.describe "the early cutoff on a published release", order: :defined do
     run!("build", "specs/ec.yml", "--out", "out", "--backend", "host")
     run!("publish", "specs/ec.yml", "--out", "out")
     @first = record("base/lib")
+    @first_user = record("base/user")
   end
 
   after(:all) { FileUtils.rm_rf(@dir) }
@@ -63,10 +64,20 @@ RSpec.describe "the early cutoff on a published release", order: :defined do
     expect(body["version"]).not_to eq(@first["version"])
     expect(body["interface"]).to include("against" => @first["version"], "verdict" => "unchanged", "changes" => [])
     expect(body["interface"]["compared"]).to be >= 3 # the header, the library, the copyright
+    # plan.yml carries the candidate; the build decides it would keep base/user's published version
+    entry = YAML.safe_load(File.read(File.join(@release.target_dir, "plan.yml")))["builds"].find do |build|
+      build["package"] == "base/user"
+    end
+    user_first = @first_user["version"]
+    expect(entry["cutoff"]).to eq("keeps" => user_first, "because" => [@release.source("base/lib")])
+    expect(record("base/user")["cutoff"]).to eq("keeps" => user_first, "verdict" => "keep",
+                                                "reason" => "the interface of #{@release.source('base/lib')} did not change")
   end
 
-  it "decides a header change changed the interface, naming the header" do
+  it "decides a header change changed the interface, naming the header, and rebuilds the candidate" do
+    run!("publish", "specs/ec.yml", "--out", "out") # the body change, published as a maintainer would
     before = record("base/lib")
+    published_user = record("base/user")["version"]
     change("cut.h", "int cut_value(void);\nint cut_other(void);\n")
     run!("compile", "specs/ec.yml", "--out", "out")
     build = run!("build", "specs/ec.yml", "--out", "out", "--backend", "host")
@@ -74,5 +85,8 @@ RSpec.describe "the early cutoff on a published release", order: :defined do
     expect(header["interface"]).to include("against" => before["version"], "verdict" => "changed")
     expect(header["interface"]["changes"]).to eq(["opt/rock/ec/rock-ec-base-lib/include/cut.h: differs"])
     expect(build.stdout).to include("interface changed from #{before['version']}: opt/rock/ec/rock-ec-base-lib/include/cut.h: differs")
+    expect(record("base/user")["cutoff"]).to eq("keeps" => published_user, "verdict" => "rebuild",
+                                                "reason" => "the interface of #{@release.source('base/lib')} changed")
+    expect(build.stdout).to include("early cutoff: rebuilt: the interface of #{@release.source('base/lib')} changed")
   end
 end

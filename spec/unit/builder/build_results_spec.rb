@@ -125,6 +125,16 @@ RSpec.describe Relspec::Builder::BuildResults do
     end
   end
 
+  it "keeps what the early cutoff decided for a candidate, and refuses another verdict" do
+    with = good.sub("    duration: 12.3\n", "    duration: 12.3\n    cutoff: { keeps: 1.0-1~bookworm, verdict: keep, " \
+                                            "reason: the interface of x did not change }\n")
+    expect(with).not_to eq(good)
+    cutoff = parse(with)["rock-demo-base-base-cmake"].cutoff
+    expect(cutoff.to_h).to eq("keeps" => "1.0-1~bookworm", "verdict" => "keep", "reason" => "the interface of x did not change")
+    expect(cutoff.keep?).to be(true)
+    expect(error_of(with.sub("verdict: keep", "verdict: maybe"))).to include('verdict "maybe" is not one of keep, rebuild')
+  end
+
   it "gives the records of the planned sources as a view and keeps the others in the file" do
     Dir.mktmpdir do |dir|
       results = described_class.load(dir, release: "demo-base", target: target)
