@@ -21,7 +21,7 @@ module CutoffCorpus
   # two programs print against the new library.
   Case = Struct.new(:name, :edit, :rebuild, :changed, :abi, :runs, keyword_init: true)
 
-  BASE_OUTPUT = ["value 42 sum 3 twice 10 scale 10 colour 2 count 5", "area 12 scaled 24 twice 8 triple 9"].freeze
+  BASE_OUTPUT = ["value 42 sum 3 twice 10 scale 10 colour 2 count 5 impl 5", "area 12 scaled 24 twice 8 triple 9"].freeze
 
   def self.rebuild(name, edit, changed, abi: nil)
     Case.new(name: name, edit: edit, rebuild: true, changed: changed, abi: abi, runs: nil)
@@ -95,6 +95,8 @@ module CutoffCorpus
                                                                   "return cut_value() != 42;"] }),
     keep("a private function changed", { "cut.c" => ["static int helper(int v) { return v; }",
                                                      "static int helper(int v) { return v + 0 * (v >> 1); }"] }),
+    keep("a private type behind a pointer changed (abidiff sees it; no installed header defines it)",
+         { "cut.c" => ["struct cut_impl { int x; };", "struct cut_impl { long cache; int x; };"] }),
     keep("a new exported function nothing uses", { "cut.c" => ["int cut_old(void) { return 7; }",
                                                                "int cut_old(void) { return 7; }\nint cut_new(void) { return 8; }"] })
   ].freeze

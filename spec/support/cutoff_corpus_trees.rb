@@ -47,6 +47,9 @@ module CutoffCorpus
         cut_count cut_count_of(int n);
         enum cut_color cut_favourite(void);
         int cut_old(void);
+        struct cut_impl;
+        struct cut_impl *cut_open(void);
+        int cut_read(const struct cut_impl *impl);
         #endif
       C
       "include/cut_unused.h" => "#define CUT_UNUSED 1\n",
@@ -76,6 +79,11 @@ module CutoffCorpus
         cut_count cut_count_of(int n) { return n; }
         enum cut_color cut_favourite(void) { return CUT_BLUE; }
         int cut_old(void) { return 7; }
+        /* private: users only hold a pointer to it */
+        struct cut_impl { int x; };
+        static struct cut_impl the_impl = { .x = 5 };
+        struct cut_impl *cut_open(void) { return &the_impl; }
+        int cut_read(const struct cut_impl *impl) { return impl->x; }
       C
       "cutpp.cpp" => <<~CPP,
         #include "cutpp.h"
@@ -122,8 +130,8 @@ module CutoffCorpus
         int main(void) {
           struct cut_point p = { 1, 2 };
           cut_count n = cut_count_of(5);
-          printf("value %d sum %d twice %d scale %d colour %d count %d\\n", cut_value(), cut_sum(&p), cut_twice(5),
-                 CUT_SCALE, (int)cut_favourite(), (int)n);
+          printf("value %d sum %d twice %d scale %d colour %d count %d impl %d\\n", cut_value(), cut_sum(&p), cut_twice(5),
+                 CUT_SCALE, (int)cut_favourite(), (int)n, cut_read(cut_open()));
           return 0;
         }
       C

@@ -1,6 +1,8 @@
 # frozen_string_literal: true
 
 require "digest"
+require "fileutils"
+require "open3"
 require "rubygems/package"
 require "tempfile"
 require_relative "../error"
@@ -42,6 +44,16 @@ module Relspec
         Frozen.deep(entries)
       rescue Errno::ENOENT
         raise ToolError, "cannot run dpkg-deb (is dpkg installed?)"
+      end
+
+      # The non-debug .debs of +debs+ unpacked into the folder +root+ (what
+      # abidiff reads the installed headers from).
+      def unpack(debs, root)
+        FileUtils.mkdir_p(root)
+        debs.reject { |deb| File.basename(deb).match?(DEBUG_PACKAGE) }.sort.each do |deb|
+          output, status = Open3.capture2e("dpkg-deb", "-x", deb, root)
+          raise ToolError, "dpkg-deb -x #{deb} failed: #{output.strip}" unless status.success?
+        end
       end
 
       def extract(deb, tar)

@@ -10,7 +10,8 @@ module Relspec
     # dependents build against (docs/abi.md, "Early cutoff"): every file it
     # installs byte-identical to the build it replaces, except shared
     # libraries, whose ABI dumps must be equal or only compatibly extended
-    # (functions or variables added, nothing removed or changed). A file
+    # (functions or variables added, nothing removed or changed; abidiff
+    # reads the installed headers when both sides were unpacked). A file
     # added or removed, a link moved, a library without a dump on either
     # side: changed. Headers, pkg-config and CMake files, Ruby files,
     # generators, data and oroGen type registries (share/orogen/*.tlb) are
@@ -18,17 +19,23 @@ module Relspec
     class InterfaceCheck
       # One build's side: +files+ (InstalledFiles.of its .debs) and +dumps+
       # (library file name => path of its .abi.xml.gz).
-      Side = Struct.new(:version, :files, :dumps, keyword_init: true) do
+      # +root+: a folder holding the installed files (the .debs unpacked),
+      # whose headers tell abidiff which types users can see; nil when not
+      # unpacked.
+      Side = Struct.new(:version, :files, :dumps, :root, keyword_init: true) do
         # The side of a build at +version+ whose produced files are +paths+
-        # (its .debs and its ABI dumps, as build-results.yml lists them).
-        def self.of(version, paths)
+        # (its .debs and its ABI dumps, as build-results.yml lists them);
+        # +root+: an empty folder to unpack its non-debug .debs into, or nil.
+        def self.of(version, paths, root: nil)
           dumps = paths.filter_map { |path| (library = Dumper.library_of(path)) && [library, path] }.to_h
-          new(version: version, files: InstalledFiles.of(paths.grep(/\.deb\z/)), dumps: dumps.freeze).freeze
+          debs = paths.grep(/\.deb\z/)
+          InstalledFiles.unpack(debs, root) if root
+          new(version: version, files: InstalledFiles.of(debs), dumps: dumps.freeze, root: root).freeze
         end
       end
 
-      # +compare+: called with (old dump, new dump) paths, returns a
-      # Verdict (Comparison.method(:compare)).
+      # +compare+: called with (old dump, new dump, headers: [old root, new
+      # root] or nil), returns a Verdict (Comparison.method(:compare)).
       def initialize(compare:)
         @compare = compare
       end
@@ -67,7 +74,8 @@ module Relspec
         missing = { "old" => old.dumps[name], "new" => new.dumps[name] }.select { |_, dump| dump.nil? }.keys
         return evidence(path, :abi, :no_dump, "no ABI dump of the #{missing.join(' and ')} build") unless missing.empty?
 
-        verdict = @compare.call(old.dumps[name], new.dumps[name])
+        headers = old.root && new.root ? [old.root, new.root] : nil
+        verdict = @compare.call(old.dumps[name], new.dumps[name], headers: headers)
         evidence(path, :abi, verdict.verdict.to_sym, verdict.summary.join("; "))
       end
 

@@ -1,5 +1,7 @@
 # frozen_string_literal: true
 
+require "fileutils"
+require "tmpdir"
 require_relative "build_results"
 require_relative "../abi/interface_check"
 require_relative "../abi/comparison"
@@ -94,6 +96,12 @@ module Relspec
         BuildResults::Cutoff.new(keeps: entry.cutoff.keeps, verdict: changed ? "rebuild" : "keep", reason: reason).freeze
       end
 
+      # A build's side, its .debs unpacked into +root+ (for the headers).
+      def side(version, paths, root)
+        FileUtils.mkdir_p(root)
+        Abi::InterfaceCheck::Side.of(version, paths, root: root)
+      end
+
       def unchanged?(source)
         @lock.synchronize { @cutoffs[source]&.keep? } || !!interface(source)&.unchanged?
       end
@@ -107,9 +115,11 @@ module Relspec
       end
 
       def interface_of(entry, previous, files)
-        old = Abi::InterfaceCheck::Side.of(previous.version, previous.files.map { |file| File.join(@dir, file.name) })
-        new = Abi::InterfaceCheck::Side.of(entry.version, files)
-        BuildResults::Interface.of(@check.decide(entry.package, old: old, new: new))
+        Dir.mktmpdir("relspec-interface") do |work|
+          old = side(previous.version, previous.files.map { |file| File.join(@dir, file.name) }, File.join(work, "old"))
+          new = side(entry.version, files, File.join(work, "new"))
+          BuildResults::Interface.of(@check.decide(entry.package, old: old, new: new))
+        end
       rescue ToolError => e
         # a comparison that cannot be made proves nothing: the interface
         # counts as changed, and the build that succeeded stays built

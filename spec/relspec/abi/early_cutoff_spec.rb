@@ -73,8 +73,10 @@ RSpec.describe "the early cutoff's decision on a corpus of real builds" do
     raise "#{name} #{version}: #{e.message}\n#{File.read(log) if log && File.file?(log)}"
   end
 
+  # A build's side, its .debs unpacked (for the headers) as relspec build does.
   def side(version, files)
-    Relspec::Abi::InterfaceCheck::Side.of(version, files)
+    root = Dir.mktmpdir("side", @root)
+    Relspec::Abi::InterfaceCheck::Side.of(version, files, root: root)
   end
 
   # What the two programs of the dependent print, installed (unpacked)
@@ -104,6 +106,12 @@ RSpec.describe "the early cutoff's decision on a corpus of real builds" do
     expect(verdict.unchanged?).to be(true)
     expect(verdict.evidence.map(&:path)).to include("opt/rock/cutoff/include/cut.h", "opt/rock/cutoff/lib/libcut.so.1.0")
     expect(run_dependent(@base)).to eq(CutoffCorpus::BASE_OUTPUT)
+  end
+
+  it "leaves a private type out only through the installed headers: without them abidiff names it changed" do
+    _, files = @cases.fetch(CutoffCorpus::CASES.find { |corpus_case| corpus_case.name.start_with?("a private type") }.name)
+    dump = ->(paths) { paths.find { |path| path.end_with?("libcut.so.1.0.abi.xml.gz") } }
+    expect(Relspec::Abi::Comparison.compare(dump.call(@base), dump.call(files)).verdict).to eq("changed")
   end
 
   CutoffCorpus::CASES.each do |corpus_case|

@@ -5,8 +5,8 @@ require "relspec/abi/interface_check"
 require "relspec/abi/verdict"
 
 RSpec.describe Relspec::Abi::InterfaceCheck do
-  def side(version, files, dumps = {})
-    described_class::Side.new(version: version, files: files, dumps: dumps)
+  def side(version, files, dumps = {}, root: nil)
+    described_class::Side.new(version: version, files: files, dumps: dumps, root: root)
   end
 
   def entry(kind:, content:)
@@ -21,11 +21,16 @@ RSpec.describe Relspec::Abi::InterfaceCheck do
   # corpus (spec/relspec/abi/early_cutoff_spec.rb) runs the real one.
   def check(verdicts = {})
     calls = []
-    compare = lambda do |old, new|
+    compare = lambda do |old, new, headers:|
       calls << [old, new]
+      headers_seen << headers
       Relspec::Abi::Verdict.new(verdict: verdicts.fetch([old, new]), summary: ["summary of #{new}"], changes: [])
     end
     [described_class.new(compare: compare), calls]
+  end
+
+  def headers_seen
+    @headers_seen ||= []
   end
 
   let(:header) { { "opt/r/include/a.h" => file("h1") } }
@@ -49,8 +54,8 @@ RSpec.describe Relspec::Abi::InterfaceCheck do
     new_files = header.merge("opt/r/lib/liba.so.1" => entry(kind: :library, content: "l2"))
     { "unchanged" => true, "compatible" => true, "changed" => false, "incompatible" => false }.each do |name, kept|
       checker, calls = check(%w[old.gz new.gz] => name)
-      verdict = checker.decide("base/a", old: side("1-1", old_files, "liba.so.1" => "old.gz"),
-                                         new: side("1-2", new_files, "liba.so.1" => "new.gz"))
+      verdict = checker.decide("base/a", old: side("1-1", old_files, { "liba.so.1" => "old.gz" }),
+                                         new: side("1-2", new_files, { "liba.so.1" => "new.gz" }))
       expect(verdict.unchanged?).to be(kept), name
       expect(calls).to eq([%w[old.gz new.gz]])
       expect(verdict.evidence.last.to_h).to eq(path: "opt/r/lib/liba.so.1", check: :abi, outcome: name.to_sym,
@@ -58,11 +63,22 @@ RSpec.describe Relspec::Abi::InterfaceCheck do
     end
   end
 
+  it "hands abidiff both builds' unpacked files, so that a type no installed header defines is left out" do
+    old_files = { "lib/liba.so.1" => entry(kind: :library, content: "l1") }
+    new_files = { "lib/liba.so.1" => entry(kind: :library, content: "l2") }
+    checker, = check(%w[old.gz new.gz] => "unchanged")
+    checker.decide("base/a", old: side("1-1", old_files, { "liba.so.1" => "old.gz" }, root: "/tmp/old"),
+                             new: side("1-2", new_files, { "liba.so.1" => "new.gz" }, root: "/tmp/new"))
+    checker.decide("base/a", old: side("1-1", old_files, { "liba.so.1" => "old.gz" }),
+                             new: side("1-2", new_files, { "liba.so.1" => "new.gz" }, root: "/tmp/new"))
+    expect(headers_seen).to eq([%w[/tmp/old /tmp/new], nil])
+  end
+
   it "changes the interface when a library has no dump to compare on either side" do
     old_files = { "lib/liba.so.1" => entry(kind: :library, content: "l1") }
     new_files = { "lib/liba.so.1" => entry(kind: :library, content: "l2") }
     checker, calls = check
-    verdict = checker.decide("base/a", old: side("1-1", old_files), new: side("1-2", new_files, "liba.so.1" => "n.gz"))
+    verdict = checker.decide("base/a", old: side("1-1", old_files), new: side("1-2", new_files, { "liba.so.1" => "n.gz" }))
     expect(verdict.changes.map(&:to_s)).to eq(["lib/liba.so.1: no dump (no ABI dump of the old build)"])
     expect(calls).to eq([])
   end
