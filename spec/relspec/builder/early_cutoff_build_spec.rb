@@ -57,6 +57,9 @@ RSpec.describe "the early cutoff on a published release", order: :defined do
     plan = run!("plan", "specs/ec.yml").stdout
     expect(plan).to match(%r{base/user +rock-ec-base-user \S+-2\n    missing in all ancestors\n    early cutoff candidate: \S+-1~bookworm stays if the interface of base/lib does not change\n})
     expect(plan).not_to match(%r{base/lib .*\n.*\n    early cutoff})
+    why = run!("why", "specs/ec.yml", "base/user").stdout
+    expect(why).to end_with("  missing in all ancestors\n  early cutoff candidate: #{@first_user['version']} stays if the " \
+                            "interface of base/lib does not change\n")
 
     run!("compile", "specs/ec.yml", "--out", "out")
     run!("build", "specs/ec.yml", "--out", "out", "--backend", "host")
