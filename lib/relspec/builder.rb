@@ -44,18 +44,38 @@ module Relspec
     # finished(outcome) for progress output. +engine+: "local" (the
     # Scheduler, --jobs at once) or "slurm" (Slurm::Engine with
     # +slurm_settings+); +notices+: where the Slurm engine says what it
-    # cancelled.
+    # cancelled. +verdicts+: how a run judges each finished build against
+    # the one it replaces, called with (results, plan entries, target
+    # folder) per target (the early cutoff's Abi::InterfaceVerdicts.of,
+    # which the CLI hands in: abi/ reads builds, so builder/ does not
+    # require it); none by default.
     def self.run(path, out:, backend: "sbuild", jobs: 1, targets: nil, keep_going: false, rebuild: false,
-                 prepare_only: false, listener: nil, engine: "local", slurm_settings: nil, notices: nil)
+                 prepare_only: false, listener: nil, engine: "local", slurm_settings: nil, notices: nil,
+                 verdicts: NoVerdicts.method(:of))
       Run.new(path, out: out, backend: backend, jobs: jobs, targets: targets, keep_going: keep_going,
                     rebuild: rebuild, prepare_only: prepare_only, listener: listener,
-                    engine: engine, slurm_settings: slurm_settings, notices: notices).call
+                    engine: engine, slurm_settings: slurm_settings, notices: notices, verdicts: verdicts).call
+    end
+
+    # A run that judges no build: no interface verdict, no cutoff.
+    module NoVerdicts
+      module_function
+
+      def of(*)
+        self
+      end
+
+      def decide(*); end
+
+      def [](_source); end
+
+      def cutoff(_source); end
     end
 
     # One `relspec build` run.
     class Run
       def initialize(path, out:, backend:, jobs:, targets:, keep_going:, rebuild:, prepare_only:, listener:,
-                     engine: "local", slurm_settings: nil, notices: nil)
+                     engine: "local", slurm_settings: nil, notices: nil, verdicts: NoVerdicts.method(:of))
         raise InvalidOption, "unknown engine #{engine.inspect} (known: #{ENGINES.join(', ')})" unless ENGINES.include?(engine)
 
         @engine = engine
@@ -71,6 +91,7 @@ module Relspec
         @prepare_only = prepare_only
         @listener = listener
         @tool = Tool.new
+        @verdicts = verdicts
       end
 
       def call
@@ -144,9 +165,10 @@ module Relspec
         @listener&.start(target, plan.entries.size, done.size)
         local = Mutex.new
         debs = done.flat_map { |source| debs_of(dir, results[source]) }
+        verdicts = @verdicts.call(results, plan.entries, dir)
         on_start = ->(entry) { @listener&.building(entry) }
         on_done = lambda do |outcome|
-          record(results, dir, outcome, digests[outcome.entry.source])
+          record(results, dir, outcome, digests[outcome.entry.source], verdicts)
           results.write(backend: backend.name)
           @listener&.finished(outcome)
         end
@@ -159,7 +181,8 @@ module Relspec
                    else
                      Scheduler.new(plan.entries, jobs: @jobs, keep_going: @keep_going, done: done)
                               .run(on_start: on_start, on_done: on_done) do |entry|
-                       built = build_one(plan, entry, target, repositories, dir, backend, local.synchronize { debs.dup })
+                       built = build_one(plan, entry, target, repositories, dir, backend, local.synchronize { debs.dup },
+                                         verdicts)
                        local.synchronize { debs.concat(built.grep(/\.u?deb\z/)) }
                        built
                      end
@@ -181,12 +204,16 @@ module Relspec
 
       # Builds +entry+ into a staging folder that replaces its previous
       # results only on success (StagedResults); +debs+: the .debs built so
-      # far in this run. Returns the new files at their final paths.
-      def build_one(plan, entry, target, repositories, dir, backend, debs)
+      # far in this run; +verdicts+: Abi::InterfaceVerdicts (or NoVerdicts), which compares the
+      # new files with the ones they replace before they do. Returns the
+      # new files at their final paths.
+      def build_one(plan, entry, target, repositories, dir, backend, debs, verdicts)
         staged = StagedResults.new(dir, entry.source)
         request = request_for(plan, entry, target, repositories, debs, dir, staged.prepare)
         files = backend.build(request)
-        staged.settle(files + abi_dumps(request, files))
+        files += abi_dumps(request, files)
+        verdicts.decide(entry, files)
+        staged.settle(files)
       end
 
       # +output_dir+: where the build puts its files (StagedResults#staging).
@@ -197,7 +224,8 @@ module Relspec
                     target: target, repositories: repositories, local_debs: debs, output_dir: output_dir, log: log)
       end
 
-      def record(results, dir, outcome, dsc_sha256)
+      # +verdicts+: the run's verdicts (Abi::InterfaceVerdicts or NoVerdicts).
+      def record(results, dir, outcome, dsc_sha256, verdicts)
         entry = outcome.entry
         started = outcome.status != :skipped
         files = outcome.status == :built ? outcome.value.map { |file| BuildResults::Produced.of(dir, relative(dir, file)) } : []
@@ -205,7 +233,9 @@ module Relspec
                          source: entry.source, package: entry.package, version: entry.version, dsc_sha256: dsc_sha256,
                          status: outcome.status.to_s,
                          duration: started ? outcome.duration : nil, log: started ? OutputTree.log_name(entry.source) : nil,
-                         reason: outcome.reason&.gsub("#{dir}/", ""), files: files.freeze
+                         reason: outcome.reason&.gsub("#{dir}/", ""), files: files.freeze,
+                         interface: outcome.status == :built ? verdicts[entry.source] : nil,
+                         cutoff: outcome.status == :built ? verdicts.cutoff(entry.source) : nil
                        ))
       end
 

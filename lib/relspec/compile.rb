@@ -141,6 +141,15 @@ module Relspec
       end
     end
 
+    # The plan's early cutoff candidate (Plan::CutoffCandidate) as plan.yml
+    # carries it: the dependencies by their source names.
+    def cutoff_of(decision, built)
+      return nil unless decision.cutoff
+
+      Builder::BuildPlan::Cutoff.new(keeps: decision.cutoff.keeps.to_s,
+                                     because: decision.cutoff.because.map { |name| built.fetch(name).deb_name })
+    end
+
     # <out>/<release>/<codename>-<arch>/plan.yml: the builds in dependency
     # order, each with the packages built here that it needs first.
     def write_build_plans(plan)
@@ -151,7 +160,8 @@ module Relspec
           needs = @catalog.package(decision.package).build_dependencies.filter_map { |dep| built[dep]&.deb_name }
           Builder::BuildPlan::Entry.new(package: decision.package, source: decision.deb_name,
                                         version: decision.version.to_s, build_depends: needs,
-                                        dsc: "#{decision.deb_name}/#{Debian::Naming.dsc(decision.deb_name, decision.version)}")
+                                        dsc: "#{decision.deb_name}/#{Debian::Naming.dsc(decision.deb_name, decision.version)}",
+                                        cutoff: cutoff_of(decision, built))
         end
         FileUtils.mkdir_p(@tree.target_dir(target))
         Builder::BuildPlan.write(@tree.target_dir(target), release: plan.release, target: target, entries: entries)

@@ -24,14 +24,18 @@ module Relspec
       module_function
 
       # The Verdict of +old+ against +new+ (paths of .abi.xml.gz files).
-      def compare(old, new)
+      # +headers+: [old folder, new folder] holding each build's installed
+      # files: abidiff then leaves out changes of types no installed header
+      # defines (a pimpl's private struct), which no user can name.
+      def compare(old, new, headers: nil)
         [old, new].each { |path| raise ToolError, "the ABI dump #{path} is missing" unless File.file?(path) }
         Dir.mktmpdir("relspec-abidiff") do |dir|
           old_xml = unpack(old, File.join(dir, "old.xml"))
           new_xml = unpack(new, File.join(dir, "new.xml"))
           return registries(old_xml, old, new_xml, new) if Builder::AbiDumper.registry?(Builder::AbiDumper.library_of(old).to_s)
 
-          output, error, status = Open3.capture3("abidiff", "--no-show-locs", old_xml, new_xml)
+          dirs = headers ? ["--headers-dir1", headers.first, "--headers-dir2", headers.last] : []
+          output, error, status = Open3.capture3("abidiff", "--no-show-locs", *dirs, old_xml, new_xml)
           code = status.exitstatus
           if code.nil? || code.anybits?(ERROR_BITS)
             raise ToolError, "abidiff #{old} #{new} failed (exit status #{code.inspect}): #{error.strip.lines.first&.strip}"

@@ -23,12 +23,24 @@ module Relspec
     class BuildPlan
       FILE = OutputTree::PLAN_FILE
       ROOT_KEYS = %w[release target builds].freeze
-      BUILD_KEYS = %w[package source version dsc build_depends].freeze
+      BUILD_KEYS = %w[package source version dsc build_depends cutoff].freeze
+      CUTOFF_KEYS = %w[keeps because].freeze
       HINT = "plan.yml is written by `relspec compile`: run it again"
 
-      Entry = Struct.new(:package, :source, :version, :dsc, :build_depends, keyword_init: true) do
+      # +cutoff+: a Cutoff when the plan names the build an early cutoff
+      # candidate (Plan::CutoffCandidate), else nil.
+      Entry = Struct.new(:package, :source, :version, :dsc, :build_depends, :cutoff, keyword_init: true) do
         def to_h
-          { "package" => package, "source" => source, "version" => version, "dsc" => dsc, "build_depends" => build_depends }
+          { "package" => package, "source" => source, "version" => version, "dsc" => dsc, "build_depends" => build_depends,
+            "cutoff" => cutoff&.to_h }.compact
+        end
+      end
+
+      # The published version a candidate keeps (+keeps+) and the sources
+      # whose new builds moved it (+because+), docs/abi.md.
+      Cutoff = Struct.new(:keeps, :because, keyword_init: true) do
+        def to_h
+          { "keeps" => keeps, "because" => because }
         end
       end
 
@@ -104,7 +116,24 @@ module Relspec
           need
         end
         Entry.new(package: @fields.text(build, path + ["package"]), source: source, version: version,
-                  dsc: @fields.plain_path(build, path + ["dsc"]), build_depends: needs.freeze).freeze
+                  dsc: @fields.plain_path(build, path + ["dsc"]), build_depends: needs.freeze,
+                  cutoff: cutoff(build, path + ["cutoff"], needs)).freeze
+      end
+
+      def cutoff(build, path, needs)
+        data = build[path.last]
+        return nil if data.nil?
+
+        @fields.fail_at(path, "#{@fields.describe(path)} must be a mapping of keeps and because") unless data.is_a?(Hash)
+        @fields.known_keys(data, path, CUTOFF_KEYS)
+        keeps = @fields.text(data, path + ["keeps"])
+        @fields.fail_at(path + ["keeps"], "invalid Debian version #{keeps.inspect}") unless Apt::Version.valid?(keeps)
+        because = @fields.list(data, path + ["because"], of: "source names").each_with_index.map do |source, at|
+          @fields.fail_at(path + ["because", at], "#{source.inspect} is not among the build's build_depends") \
+            unless needs.include?(source)
+          source
+        end
+        Cutoff.new(keeps: keeps, because: because.freeze).freeze
       end
     end
   end

@@ -27,8 +27,14 @@ module Relspec
       FORMAT_KEY = "relspec_build_results"
       FORMAT_VERSION = 1
       ROOT_KEYS = [FORMAT_KEY, "release", "target", "backend", "packages"].freeze
-      PACKAGE_KEYS = %w[package version dsc_sha256 status duration log reason files].freeze
+      PACKAGE_KEYS = %w[package version dsc_sha256 status duration log reason files interface cutoff].freeze
+      CUTOFF_KEYS = %w[keeps verdict reason].freeze
+      CUTOFF_VERDICTS = %w[keep rebuild].freeze
       FILE_KEYS = %w[name sha256 size].freeze
+      INTERFACE_KEYS = %w[against verdict compared changes].freeze
+      INTERFACE_VERDICTS = %w[unchanged changed].freeze
+      # The changes a record keeps of a verdict: the first ones say why.
+      INTERFACE_CHANGES = 20
       STATUSES = %w[built failed skipped published].freeze
       SHA256 = /\A[0-9a-f]{64}\z/
       HINT = "build-results.yml is written by `relspec build`: delete it and run `relspec build` again for this target"
@@ -51,12 +57,49 @@ module Relspec
         end
       end
 
+      # The early cutoff's verdict on a build (Abi::InterfaceCheck), as
+      # the record keeps it: +against+ the version of the build it
+      # replaced, +verdict+ "unchanged" or "changed", +compared+ how many
+      # installed files were compared, +changes+ the first of what changed
+      # (Evidence#to_s). docs/abi.md, "Early cutoff".
+      Interface = Struct.new(:against, :verdict, :compared, :changes, keyword_init: true) do
+        def self.of(verdict)
+          new(against: verdict.against, verdict: verdict.unchanged? ? "unchanged" : "changed",
+              compared: verdict.evidence.size,
+              changes: verdict.changes.first(INTERFACE_CHANGES).map(&:to_s).freeze).freeze
+        end
+
+        def unchanged?
+          verdict == "unchanged"
+        end
+
+        def to_h
+          { "against" => against, "verdict" => verdict, "compared" => compared, "changes" => changes }
+        end
+      end
+
+      # What the early cutoff decided for a candidate of the plan
+      # (BuildPlan::Cutoff): "keep" its published version +keeps+ or
+      # "rebuild", with the +reason+. The build still rebuilds it today
+      # (docs/abi.md): the record says what the cutoff would save.
+      Cutoff = Struct.new(:keeps, :verdict, :reason, keyword_init: true) do
+        def keep?
+          verdict == "keep"
+        end
+
+        def to_h
+          { "keeps" => keeps, "verdict" => verdict, "reason" => reason }
+        end
+      end
+
       # One source package's result. +files+: Produced, empty unless built;
       # +dsc_sha256+: the SHA256 of the .dsc it was built from (nil in
       # results written before relspec recorded it: such a build is done
       # again, since a source rewritten at the same version is another one).
+      # +interface+: an Interface when the build replaced an earlier one
+      # of another version, else nil.
       Record = Struct.new(:source, :package, :version, :dsc_sha256, :status, :duration, :log, :reason, :files,
-                          keyword_init: true) do
+                          :interface, :cutoff, keyword_init: true) do
         def built?
           status == "built"
         end
@@ -64,7 +107,8 @@ module Relspec
         def to_h
           { "package" => package, "version" => version, "dsc_sha256" => dsc_sha256, "status" => status,
             "duration" => duration,
-            "log" => log, "reason" => reason, "files" => files.empty? ? nil : files.map(&:to_h) }.compact
+            "log" => log, "reason" => reason, "files" => files.empty? ? nil : files.map(&:to_h),
+            "interface" => interface&.to_h, "cutoff" => cutoff&.to_h }.compact
         end
       end
 
@@ -189,7 +233,40 @@ module Relspec
                      status: status,
                      duration: duration(fields, path + ["duration"]),
                      log: fields["log"].nil? ? nil : @fields.plain_path(fields, path + ["log"]),
-                     reason: @fields.optional_text(fields, path + ["reason"]), files: files.freeze).freeze
+                     reason: @fields.optional_text(fields, path + ["reason"]), files: files.freeze,
+                     interface: interface(fields, path + ["interface"]), cutoff: cutoff(fields, path + ["cutoff"])).freeze
+        end
+
+        def cutoff(fields, path)
+          data = fields[path.last]
+          return nil if data.nil?
+
+          fail_at(path, "#{@fields.describe(path)} must be a mapping of keeps, verdict and reason") unless data.is_a?(Hash)
+          @fields.known_keys(data, path, CUTOFF_KEYS)
+          verdict = @fields.text(data, path + ["verdict"])
+          fail_at(path + ["verdict"], "verdict #{verdict.inspect} is not one of #{CUTOFF_VERDICTS.join(', ')}") \
+            unless CUTOFF_VERDICTS.include?(verdict)
+          Cutoff.new(keeps: version(data, path + ["keeps"]), verdict: verdict, reason: @fields.text(data, path + ["reason"])).freeze
+        end
+
+        def interface(fields, path)
+          return nil if fields[path.last].nil?
+
+          data = fields[path.last]
+          fail_at(path, "#{@fields.describe(path)} must be a mapping of against, verdict, compared and changes") \
+            unless data.is_a?(Hash)
+          @fields.known_keys(data, path, INTERFACE_KEYS)
+          verdict = @fields.text(data, path + ["verdict"])
+          fail_at(path + ["verdict"], "verdict #{verdict.inspect} is not one of #{INTERFACE_VERDICTS.join(', ')}") \
+            unless INTERFACE_VERDICTS.include?(verdict)
+          compared = data["compared"]
+          fail_at(path + ["compared"], "compared must be a number of files") unless compared.is_a?(Integer) && compared >= 0
+          changes = @fields.list(data, path + ["changes"], of: "changes").each_with_index.map do |change, index|
+            fail_at(path + ["changes", index], "a change must be text") unless change.is_a?(String)
+            change
+          end
+          Interface.new(against: version(data, path + ["against"]), verdict: verdict, compared: compared,
+                        changes: changes.freeze).freeze
         end
 
         def files(fields, path)

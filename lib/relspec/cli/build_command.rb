@@ -2,6 +2,7 @@
 
 require "json"
 require_relative "../builder"
+require_relative "../abi/interface_verdicts"
 
 module Relspec
   module CLI
@@ -22,7 +23,8 @@ module Relspec
 
       def call
         settings = Builder::Slurm::Settings.load(user_dir: config_home, project_dir: Dir.pwd, pairs: @slurm)
-        reports = Builder.run(@path, **@options, slurm_settings: settings, listener: listener)
+        reports = Builder.run(@path, **@options, slurm_settings: settings, listener: listener,
+                                                 verdicts: Abi::InterfaceVerdicts.method(:of))
         @format == "json" ? @io.puts(JSON.pretty_generate(reports.map { |report| as_json(report) })) : print_text(reports)
         reports.any?(&:failed?) ? 1 : 0
       end
@@ -71,7 +73,7 @@ module Relspec
       def print_table(report)
         rows = report.results.entries.map do |record|
           [record.source, record.version.to_s, record.status, record.duration ? format("%.1f s", record.duration) : "",
-           record.reason.to_s.lines.first.to_s.strip]
+           (record.reason || cutoff_text(record) || interface_text(record.interface)).to_s.lines.first.to_s.strip]
         end
         @io.puts("#{report.target}: #{count(report, :built)} built, #{report.reused} already built, " \
                  "#{count(report, :failed)} failed, #{count(report, :skipped)} skipped (#{report.dir})")
@@ -81,6 +83,22 @@ module Relspec
         rows.each do |row|
           @io.puts("  #{row.first(4).each_with_index.map { |cell, i| cell.ljust(widths[i]) }.join('  ')}  #{row[4]}".rstrip)
         end
+      end
+
+      # What the early cutoff decided for a candidate (docs/abi.md).
+      def cutoff_text(record)
+        cutoff = record.cutoff
+        return nil unless cutoff
+
+        cutoff.keep? ? "early cutoff: keeps #{cutoff.keeps}: #{cutoff.reason}" : "early cutoff: rebuilt: #{cutoff.reason}"
+      end
+
+      # The early cutoff's verdict of a build (docs/abi.md), in its row.
+      def interface_text(interface)
+        return nil unless interface
+
+        text = "interface #{interface.verdict} from #{interface.against}"
+        interface.changes.empty? ? text : "#{text}: #{interface.changes.first}"
       end
 
       def count(report, status)

@@ -50,7 +50,8 @@ module Relspec
           "#{target}: #{@package} is taken from the distribution as #{decision.deb_name} #{decision.version}\n"
         else
           verb = decision.published? ? "was built here and is published" : "is built here"
-          "#{target}: #{@package} #{verb} as #{decision.deb_name} #{decision.version}, because:\n#{steps(decision.cause)}\n"
+          "#{target}: #{@package} #{verb} as #{decision.deb_name} #{decision.version}, because:\n#{steps(decision.cause)}\n" \
+            "#{"  #{decision.cutoff}\n" if decision.cutoff}"
         end
       end
     end

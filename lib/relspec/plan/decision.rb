@@ -13,7 +13,9 @@ module Relspec
     # (builds): the packages whose decisions on this target its debian/
     # names (its direct dependencies), sorted: a change of one of them is
     # what moves the build's revision when its own source did not change.
-    Decision = Struct.new(:package, :kind, :deb_name, :version, :ancestor, :cause, :debian_digest, :depends,
+    # +cutoff+ (builds): a CutoffCandidate when only dependencies rebuilt
+    # now moved it, else nil.
+    Decision = Struct.new(:package, :kind, :deb_name, :version, :ancestor, :cause, :debian_digest, :depends, :cutoff,
                           keyword_init: true) do
       def inherit?
         kind == :inherit

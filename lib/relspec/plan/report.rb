@@ -28,14 +28,7 @@ module Relspec
           counts = @plan.counts(target)
           lines << "#{target.to_s.ljust(22)}#{columns.map { |column| counts[column].to_s.rjust(12) }.join}"
         end
-        build_groups.each do |targets, builds|
-          lines << "" << "builds on #{targets.join(', ')}:"
-          width = builds.map { |decision| decision.package.size }.max
-          builds.each do |decision|
-            lines << "  #{decision.package.ljust(width)}  #{decision.deb_name} #{short_version(decision)}"
-            lines << "    #{decision.cause}"
-          end
-        end
+        build_groups.each { |targets, builds| lines.concat(build_lines(targets, builds)) }
         other_groups.each do |title, groups|
           groups.each do |targets, texts|
             lines << "" << "#{title} #{targets.join(', ')}:"
@@ -57,7 +50,9 @@ module Relspec
         end
         build_groups.each do |targets, builds|
           lines << "" << "**Builds on #{targets.join(', ')}**" << ""
-          builds.each { |decision| lines << "- `#{decision.package}` (`#{decision.deb_name}`): #{decision.cause}" }
+          builds.each do |decision|
+            lines << "- `#{decision.package}` (`#{decision.deb_name}`): #{decision.cause}#{"; #{decision.cutoff}" if decision.cutoff}"
+          end
         end
         other_groups.each do |title, groups|
           groups.each do |targets, texts|
@@ -71,6 +66,16 @@ module Relspec
       end
 
       private
+
+      # A group of builds in the text: package, version, why, and whether
+      # the early cutoff may keep it.
+      def build_lines(targets, builds)
+        width = builds.map { |decision| decision.package.size }.max
+        ["", "builds on #{targets.join(', ')}:"] + builds.flat_map do |decision|
+          ["  #{decision.package.ljust(width)}  #{decision.deb_name} #{short_version(decision)}", "    #{decision.cause}",
+           *("    #{decision.cutoff}" if decision.cutoff)]
+        end
+      end
 
       def headline
         packages = @plan.packages.size
@@ -119,7 +124,9 @@ module Relspec
           builds = @plan.builds(target).sort_by(&:package)
           next if builds.empty?
 
-          key = builds.map { |decision| [decision.package, decision.deb_name, decision.cause.to_s, short_version(decision)] }
+          key = builds.map do |decision|
+            [decision.package, decision.deb_name, decision.cause.to_s, short_version(decision), decision.cutoff.to_s]
+          end
           groups[key] << [target, builds]
         end
         groups.values.map { |entries| [entries.map { |target, _| target.to_s }, entries.first[1]] }

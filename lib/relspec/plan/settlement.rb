@@ -5,6 +5,7 @@ require_relative "build_order"
 require_relative "debian_inputs"
 require_relative "versioning"
 require_relative "rising_upstream"
+require_relative "cutoff_candidate"
 require_relative "../debian/debian_dir"
 require_relative "../debian/package_version"
 
@@ -78,15 +79,43 @@ module Relspec
         upstream = upstream_of(target, decision, package)
         input = @inputs.for(target, decision, upstream, decisions)
         overlay = @overlays.call(package.name, target.arch)
-        digest = Digest::SHA256.hexdigest(Debian::DebianDir.digest(Debian::DebianDir.render(input, version: nil)) +
-                                          overlay.signature + source_signature(package))
+        digest = digest_of(input, overlay, package)
         result = @versioning.settle(target: target, package: package.name, deb_name: decision.deb_name,
                                     upstream: upstream, digest: digest)
+        cutoff = result.published ? nil : candidate(target, decision, package, upstream, decisions, overlay)
         final = Decision.new(**decision.each_pair.to_h, kind: result.published ? :published : :build,
                                                         version: result.version, debian_digest: digest,
-                                                        depends: @inputs.dependency_names(package, decisions).uniq.sort.freeze)
+                                                        depends: @inputs.dependency_names(package, decisions).uniq.sort.freeze,
+                                                        cutoff: cutoff)
                         .freeze
         [final, Work.new(input: input, overlay: overlay, digest: digest).freeze]
+      end
+
+      def digest_of(input, overlay, package)
+        Digest::SHA256.hexdigest(Debian::DebianDir.digest(Debian::DebianDir.render(input, version: nil)) +
+                                 overlay.signature + source_signature(package))
+      end
+
+      # A CutoffCandidate when the build's debian/, with the dependencies
+      # rebuilt now at the versions the repository holds, is the one of the
+      # published build the history vouches for: only those dependencies'
+      # versions moved it. nil otherwise.
+      def candidate(target, decision, package, upstream, decisions, overlay)
+        kept, recorded = @versioning.previous(target: target, package: package.name, deb_name: decision.deb_name,
+                                              upstream: upstream)
+        return nil unless kept
+
+        published = @inputs.dependency_names(package, decisions).uniq.filter_map do |name|
+          dependency = decisions[name]
+          held = dependency.build? && @versioning.published(target, dependency.deb_name)
+          held && held.to_s != dependency.version.to_s ? [name, Decision.new(**dependency.each_pair.to_h, version: held).freeze] : nil
+        end.to_h
+        return nil if published.empty?
+
+        before = @inputs.for(target, decision, upstream, decisions.merge(published))
+        return nil unless digest_of(before, overlay, package) == recorded
+
+        CutoffCandidate.new(keeps: kept, because: published.keys.sort.freeze).freeze
       end
     end
   end

@@ -38,6 +38,26 @@ module Relspec
         Settled.new(version: version, published: vouched && version.same_as?(@own.version_of(deb_name, target))).freeze
       end
 
+      # The version of +package+ (+deb_name+) the release's repository
+      # holds for +upstream+ on +target+ when the history vouches for it
+      # (the revision it records), with the digest of the debian/ it was
+      # recorded from: [PackageVersion, digest], or nil. The build an early
+      # cutoff would keep (docs/abi.md).
+      def previous(target:, package:, deb_name:, upstream:)
+        recorded = @history.build(target, package, upstream)
+        held = published(target, deb_name)
+        return nil unless recorded && held && held.upstream == upstream && held.revision == recorded.revision
+
+        [held, recorded.debian_digest]
+      end
+
+      # The version of +deb_name+ the release's repository holds on
+      # +target+, as a PackageVersion of the target's codename, or nil.
+      def published(target, deb_name)
+        held = Debian::PackageVersion.parse(@own.version_of(deb_name, target))
+        held && held.codename == target.codename ? held : nil
+      end
+
       private
 
       def revision_from(recorded, digest)

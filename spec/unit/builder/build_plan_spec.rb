@@ -57,6 +57,20 @@ RSpec.describe Relspec::Builder::BuildPlan do
     end
   end
 
+  it "carries an early cutoff candidate, and refuses one that names what the build does not depend on" do
+    candidate = entries.last.to_h.transform_keys(&:to_sym).merge(
+      cutoff: described_class::Cutoff.new(keeps: "2.0-1~bookworm", because: ["rock-r-base-a"])
+    )
+    with = [entries.first, described_class::Entry.new(**candidate)]
+    text = written(with)
+    plan = described_class.parse(text, dir: "out/r/bookworm-amd64")
+    expect(plan.entries.last.cutoff.to_h).to eq("keeps" => "2.0-1~bookworm", "because" => ["rock-r-base-a"])
+    expect(plan.entries.first.cutoff).to be_nil
+    expect(error_of(text.sub(/because:\n *- rock-r-base-a/, "because: [rock-r-base-c]")))
+      .to include('"rock-r-base-c" is not among the build\'s build_depends')
+    expect(error_of(text.sub('keeps: "2.0-1~bookworm"', "keeps: 2 0"))).to include('invalid Debian version "2 0"')
+  end
+
   it "refuses binary bytes, an empty file and broken YAML" do
     expect(error_of("\x00\xff".b)).to include("plan.yml:1:", "invalid UTF-8")
     expect(error_of("")).to include("the file is empty or not a mapping")

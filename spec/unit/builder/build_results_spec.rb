@@ -101,6 +101,40 @@ RSpec.describe Relspec::Builder::BuildResults do
     end
   end
 
+  it "keeps the early cutoff's verdict of a build with its record, and reads it back" do
+    with = good.sub("    duration: 12.3\n", "    duration: 12.3\n    interface:\n      against: 1.0-1~bookworm\n      " \
+                                            "verdict: changed\n      compared: 3\n      " \
+                                            "changes: [\"include/a.h: differs\"]\n")
+    expect(with).not_to eq(good)
+    interface = parse(with)["rock-demo-base-base-cmake"].interface
+    expect(interface.to_h).to eq("against" => "1.0-1~bookworm", "verdict" => "changed", "compared" => 3,
+                                 "changes" => ["include/a.h: differs"])
+    expect(interface.unchanged?).to be(false)
+    expect(parse(with)["rock-demo-base-base-cmake"].to_h["interface"]).to eq(interface.to_h)
+    expect(parse(good)["rock-demo-base-base-cmake"].interface).to be_nil
+    {
+      ["verdict: changed", "verdict: maybe"] => [13, 'verdict "maybe" is not one of unchanged, changed'],
+      ["compared: 3", "compared: many"] => [14, "compared must be a number of files"],
+      ['changes: ["include/a.h: differs"]', "changes: 4"] => [15, "interface.changes must be a list of changes"],
+      ["against: 1.0-1~bookworm", "against: 1 0"] => [12, 'invalid Debian version "1 0"'],
+      ["verdict: changed", "verdit: changed"] => [13, 'unknown key "verdit"']
+    }.each do |(from, to), (line, message)|
+      text = with.sub(from, to)
+      expect(text).not_to eq(with)
+      expect(error_of(text)).to match(/build-results\.yml:#{line}:\d+: error\[build-results\]: .*#{Regexp.escape(message)}/)
+    end
+  end
+
+  it "keeps what the early cutoff decided for a candidate, and refuses another verdict" do
+    with = good.sub("    duration: 12.3\n", "    duration: 12.3\n    cutoff: { keeps: 1.0-1~bookworm, verdict: keep, " \
+                                            "reason: the interface of x did not change }\n")
+    expect(with).not_to eq(good)
+    cutoff = parse(with)["rock-demo-base-base-cmake"].cutoff
+    expect(cutoff.to_h).to eq("keeps" => "1.0-1~bookworm", "verdict" => "keep", "reason" => "the interface of x did not change")
+    expect(cutoff.keep?).to be(true)
+    expect(error_of(with.sub("verdict: keep", "verdict: maybe"))).to include('verdict "maybe" is not one of keep, rebuild')
+  end
+
   it "gives the records of the planned sources as a view and keeps the others in the file" do
     Dir.mktmpdir do |dir|
       results = described_class.load(dir, release: "demo-base", target: target)

@@ -42,4 +42,28 @@ RSpec.describe Relspec::CLI::BuildCommand do
     both.finished(:outcome)
     expect(seen).to eq(([[:start, "t", 2, 0]] * 2) + ([%i[building entry]] * 2) + ([%i[finished outcome]] * 2))
   end
+
+  it "shows each rebuilt package's interface verdict in its row, with the first change" do
+    results = Relspec::Builder::BuildResults
+    interface = ->(verdict, changes) { results::Interface.new(against: "1-1", verdict: verdict, compared: 3, changes: changes) }
+    records = [results::Record.new(source: "rock-a", version: "1-2", status: "built", duration: 2.0, files: [],
+                                   interface: interface.call("unchanged", [])),
+               results::Record.new(source: "rock-bb", version: "1-2", status: "built", duration: 3.0, files: [],
+                                   interface: interface.call("changed", ["opt/r/include/b.h: differs", "x: added"])),
+               results::Record.new(source: "rock-c", version: "1-1", status: "built", duration: 1.0, files: []),
+               results::Record.new(source: "rock-d", version: "1-2", status: "built", duration: 1.0, files: [],
+                                   interface: interface.call("unchanged", []),
+                                   cutoff: results::Cutoff.new(keeps: "1-1", verdict: "keep",
+                                                               reason: "the interface of rock-a did not change"))]
+    report = Relspec::Builder::TargetReport.new(target: "bookworm/amd64", dir: "out/r/bookworm-amd64",
+                                                results: Struct.new(:entries).new(records), outcomes: [], reused: 0)
+    io = StringIO.new
+    command = described_class.new(path: "s.yml", out: "build", backend: "host", jobs: 1, targets: nil, keep_going: false,
+                                  rebuild: false, prepare: false, format: "text", out_io: io, progress_io: nil)
+    command.send(:print_table, report)
+    expect(io.string.lines.drop(1)).to eq(["  rock-a   1-2  built  2.0 s  interface unchanged from 1-1\n",
+                                           "  rock-bb  1-2  built  3.0 s  interface changed from 1-1: opt/r/include/b.h: differs\n",
+                                           "  rock-c   1-1  built  1.0 s\n",
+                                           "  rock-d   1-2  built  1.0 s  early cutoff: keeps 1-1: the interface of rock-a did not change\n"])
+  end
 end

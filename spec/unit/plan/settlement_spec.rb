@@ -114,6 +114,42 @@ RSpec.describe Relspec::Plan::Settlement do
     expect(again.fetch(target).values.map(&:kind)).to eq(%i[inherit published published])
   end
 
+  context "with every build published and base/logging changed (the early cutoff's candidates)" do
+    def published
+      first, = settle
+      builds = first.fetch(target).values.select(&:build?)
+      history = Relspec::Plan::History.empty.with_all(builds.map do |decision|
+        [target, decision.package, decision.version, decision.debian_digest]
+      end)
+      [history, builds.to_h { |decision| [decision.deb_name, decision.version.to_s] }]
+    end
+
+    def changed(names)
+      ->(name, _arch) { Struct.new(:signature).new(names.include?(name) ? "patch" : "") }
+    end
+
+    it "names the dependent a candidate that keeps its published version when only base/logging's version moved it" do
+      history, held = published
+      again, = settle(history: history, held: held, overlays: changed(["base/logging"]))
+      logging = again.fetch(target).fetch("base/logging")
+      types = again.fetch(target).fetch("base/types")
+      expect([logging.kind, logging.version.revision, logging.cutoff]).to eq([:build, 2, nil])
+      expect([types.kind, types.version.revision]).to eq([:build, 2]) # built as today until the cutoff decides
+      expect(types.cutoff.to_h).to eq(keeps: Relspec::Debian::PackageVersion.parse("#{upstream}-1~bookworm"),
+                                      because: ["base/logging"])
+      expect(types.cutoff.to_s).to eq("early cutoff candidate: #{upstream}-1~bookworm stays if the interface of " \
+                                      "base/logging does not change")
+    end
+
+    it "names no candidate when the dependent's own debian/ changed too, or nothing it keeps is published" do
+      history, held = published
+      both, = settle(history: history, held: held, overlays: changed(%w[base/logging base/types]))
+      expect(both.fetch(target).fetch("base/types").cutoff).to be_nil
+      unpublished, = settle(history: history, held: held.except(deb("base/types")), overlays: changed(["base/logging"]))
+      expect(unpublished.fetch(target).fetch("base/types").cutoff).to be_nil
+    end
+  end
+
   it "takes the overlay into the digest" do
     plain, = settle
     patched, = settle(overlays: ->(name, _arch) { Struct.new(:signature).new(name == "base/types" ? "patch" : "") })

@@ -31,6 +31,20 @@ RSpec.describe Relspec::Plan::Versioning do
                    .settle(target: target, package: "pkg/a", deb_name: "rock-r-pkg-a", upstream: upstream, digest: digest)
   end
 
+  it "gives the published build an early cutoff keeps only when the history vouches for the revision the repository holds" do
+    previous = lambda do |history, own|
+      described_class.new(history: history, own: own)
+                     .previous(target: target, package: "pkg/a", deb_name: "rock-r-pkg-a", upstream: upstream)
+    end
+    kept = previous.call(history(revision: 2, digest: digest), own("#{upstream}-2~bookworm"))
+    expect([kept.first.to_s, kept.last]).to eq(["#{upstream}-2~bookworm", digest])
+    expect(previous.call(history(revision: 3, digest: digest), own("#{upstream}-2~bookworm"))).to be_nil # not vouched
+    expect(previous.call(history, own("#{upstream}-2~bookworm"))).to be_nil # no history
+    expect(previous.call(history(revision: 2, digest: digest), own)).to be_nil # not published
+    expect(previous.call(history(revision: 2, digest: digest), own("#{upstream}-2~bullseye"))).to be_nil
+    expect(previous.call(history(revision: 2, digest: digest), own("0.9.20190101.000000-2~bookworm"))).to be_nil
+  end
+
   it "starts a new upstream version at revision 1, not published" do
     settled = settle
     expect(settled.version.to_s).to eq("#{upstream}-1~bookworm")

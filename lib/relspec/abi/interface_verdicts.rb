@@ -1,0 +1,131 @@
+# frozen_string_literal: true
+
+require "fileutils"
+require "tmpdir"
+require_relative "../builder/build_results"
+require_relative "interface_check"
+require_relative "comparison"
+
+module Relspec
+  module Abi
+    # The early cutoff's verdicts of one run (docs/abi.md, "Early cutoff"):
+    # each package built is compared, when its build finishes and before
+    # its files replace the old ones, with the build it replaces in the
+    # target folder, as build-results.yml recorded it when the run started.
+    # Only a build of another version whose files are all still there with
+    # the bytes recorded is compared. Thread-safe: builds finish in worker
+    # threads, records are written in the calling one.
+    class InterfaceVerdicts
+      # The verdicts of a run building +entries+ (plan entries) over
+      # +results+ (BuildResults, as the run found them) in +dir+.
+      def self.of(results, entries, dir)
+        new(entries.to_h { |entry| [entry.source, results[entry.source]] }, dir, entries: entries)
+      end
+
+      # +previous+: source => Builder::BuildResults::Record (or nil) before the run;
+      # +dir+: the target folder; +compare+: how two dumps are compared;
+      # +entries+: the plan's entries (their build_depends give each
+      # build's closure, their cutoff the early cutoff's candidates).
+      def initialize(previous, dir, compare: Comparison.method(:compare), entries: [])
+        @previous = previous
+        @dir = dir
+        @check = InterfaceCheck.new(compare: compare)
+        @entries = entries.to_h { |entry| [entry.source, entry] }
+        @verdicts = {}
+        @cutoffs = {}
+        @lock = Mutex.new
+      end
+
+      # Decides the verdict of +entry+'s new build, whose produced files
+      # are +files+ (paths), and keeps it for #[] (nil when there is
+      # nothing to compare); for a candidate, what the early cutoff decides
+      # (#cutoff).
+      def decide(entry, files)
+        previous = @previous[entry.source]
+        interface = comparable?(previous, entry) ? interface_of(entry, previous, files) : nil
+        cutoff = entry.cutoff && cutoff_of(entry)
+        @lock.synchronize do
+          @verdicts[entry.source] = interface
+          @cutoffs[entry.source] = cutoff
+        end
+        interface
+      end
+
+      # The verdict decided for +source+ in this run, or nil.
+      def [](source)
+        @lock.synchronize { @verdicts[source] }
+      end
+
+      # What the early cutoff decided for the candidate +source+ in this
+      # run (a Builder::BuildResults::Cutoff), or nil.
+      def cutoff(source)
+        @lock.synchronize { @cutoffs[source] }
+      end
+
+      # The sources of the plan +source+ needs built first, directly or
+      # through others.
+      def closure(source, seen = {})
+        (@entries[source]&.build_depends || []).each do |need|
+          next if seen[need]
+
+          seen[need] = true
+          closure(need, seen)
+        end
+        seen.keys.sort
+      end
+
+      def comparable?(previous, entry)
+        !!previous&.built? && previous.version != entry.version && previous.files.all? { |file| file.intact?(@dir) }
+      end
+
+      private
+
+      # Keep when every build of the candidate's closure left its
+      # interface unchanged (its verdict, of this run or of the earlier run
+      # that built it at its planned version) or is kept itself: then
+      # nothing the candidate builds against changed, also through the
+      # headers of a dependency's dependency.
+      def cutoff_of(entry)
+        changed = closure(entry.source).find { |source| !unchanged?(source) }
+        reason = if changed
+                   verdict = interface(changed)
+                   verdict ? "the interface of #{changed} changed" : "#{changed} has no verdict to go by"
+                 else
+                   "the interface of #{entry.cutoff.because.join(', ')} did not change"
+                 end
+        Builder::BuildResults::Cutoff.new(keeps: entry.cutoff.keeps, verdict: changed ? "rebuild" : "keep", reason: reason).freeze
+      end
+
+      # A build's side, its .debs unpacked into +root+ (for the headers).
+      def side(version, paths, root)
+        FileUtils.mkdir_p(root)
+        InterfaceCheck::Side.of(version, paths, root: root)
+      end
+
+      def unchanged?(source)
+        @lock.synchronize { @cutoffs[source]&.keep? } || !!interface(source)&.unchanged?
+      end
+
+      def interface(source)
+        found = @lock.synchronize { @verdicts[source] }
+        return found if found
+
+        previous = @previous[source]
+        previous&.version == @entries[source]&.version ? previous&.interface : nil
+      end
+
+      def interface_of(entry, previous, files)
+        Dir.mktmpdir("relspec-interface") do |work|
+          old = side(previous.version, previous.files.map { |file| File.join(@dir, file.name) }, File.join(work, "old"))
+          new = side(entry.version, files, File.join(work, "new"))
+          Builder::BuildResults::Interface.of(@check.decide(entry.package, old: old, new: new))
+        end
+      rescue ToolError => e
+        # a comparison that cannot be made proves nothing: the interface
+        # counts as changed, and the build that succeeded stays built
+        Builder::BuildResults::Interface.new(against: previous.version, verdict: "changed", compared: 0,
+                                             changes: ["not compared: #{e.message}"].freeze).freeze
+      end
+    end
+  end
+end

@@ -1,0 +1,18 @@
+# frozen_string_literal: true
+
+module Relspec
+  module Plan
+    # A build the early cutoff may keep (docs/abi.md, "Early cutoff"): its
+    # debian/ moved only because dependencies of the release are rebuilt
+    # at new versions (+because+: their names, sorted); with their
+    # published versions in its place it is the debian/ of the build the
+    # release's repository holds (+keeps+: that PackageVersion). Whether
+    # it is kept is decided once those dependencies are built: when the
+    # interface of each did not change.
+    CutoffCandidate = Struct.new(:keeps, :because, keyword_init: true) do
+      def to_s
+        "early cutoff candidate: #{keeps} stays if the interface of #{because.join(', ')} does not change"
+      end
+    end
+  end
+end

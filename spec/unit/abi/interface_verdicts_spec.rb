@@ -1,0 +1,77 @@
+# frozen_string_literal: true
+
+require_relative "../unit_helper"
+require "fileutils"
+require "relspec/abi/interface_verdicts"
+require "relspec/builder/build_plan"
+
+# Which builds are compared with the one they replace; the comparison
+# itself runs dpkg-deb and abidiff (spec/relspec/builder/early_cutoff_build_spec.rb).
+RSpec.describe Relspec::Abi::InterfaceVerdicts, :tmpdir do
+  let(:results) { Relspec::Builder::BuildResults }
+
+  def record(version, status: "built", files: nil)
+    files ||= begin
+      FileUtils.mkdir_p(File.join(@dir, "results/a"))
+      File.write(File.join(@dir, "results/a/a_#{version}_amd64.deb"), "deb #{version}")
+      [results::Produced.of(@dir, "results/a/a_#{version}_amd64.deb")]
+    end
+    results::Record.new(source: "a", package: "base/a", version: version, status: status, files: files)
+  end
+
+  let(:entry) { plan_entry("a", "1-2") }
+
+  def plan_entry(source, version, needs: [], cutoff: nil)
+    Relspec::Builder::BuildPlan::Entry.new(package: "base/#{source}", source: source, version: version, dsc: "#{source}.dsc",
+                                           build_depends: needs, cutoff: cutoff)
+  end
+
+  it "compares only a build of another version whose files are all there with the bytes recorded" do
+    verdicts = described_class.new({}, @dir)
+    expect(verdicts.comparable?(nil, entry)).to be(false) # a first build
+    expect(verdicts.comparable?(record("1-2"), entry)).to be(false) # the same version, built again
+    expect(verdicts.comparable?(record("1-1", status: "failed", files: []), entry)).to be(false)
+    previous = record("1-1")
+    expect(verdicts.comparable?(previous, entry)).to be(true)
+    File.write(File.join(@dir, "results/a/a_1-1_amd64.deb"), "damaged")
+    expect(verdicts.comparable?(previous, entry)).to be(false)
+  end
+
+  it "decides nothing, and keeps nothing, when there is nothing to compare" do
+    verdicts = described_class.of(Struct.new(:records) { def [](source) = records[source] }.new({}), [entry], @dir)
+    expect(verdicts.decide(entry, [])).to be_nil
+    expect(verdicts["a"]).to be_nil
+  end
+
+  # lib <- mid <- top: mid and top are candidates (only lib's new version
+  # moved mid, only mid's moved top). lib was built at its planned version
+  # by an earlier run, whose record holds its verdict.
+  def run_with(lib_verdict)
+    lib = plan_entry("lib", "1-2")
+    mid = plan_entry("mid", "1-2", needs: ["lib"], cutoff: Relspec::Builder::BuildPlan::Cutoff.new(keeps: "1-1", because: ["lib"]))
+    top = plan_entry("top", "1-2", needs: ["mid"], cutoff: Relspec::Builder::BuildPlan::Cutoff.new(keeps: "1-1", because: ["mid"]))
+    interface = results::Interface.new(against: "1-1", verdict: lib_verdict, compared: 2, changes: [])
+    previous = { "lib" => results::Record.new(source: "lib", package: "base/lib", version: "1-2", status: "built", files: [],
+                                              interface: interface) }
+    verdicts = described_class.new(previous, @dir, entries: [lib, mid, top])
+    [mid, top].each { |built| verdicts.decide(built, []) }
+    verdicts
+  end
+
+  it "keeps a candidate when everything its closure builds left its interface unchanged or is kept, through a chain" do
+    verdicts = run_with("unchanged")
+    expect(verdicts.closure("top")).to eq(%w[lib mid])
+    expect(verdicts.cutoff("mid").to_h).to eq("keeps" => "1-1", "verdict" => "keep",
+                                              "reason" => "the interface of lib did not change")
+    expect(verdicts.cutoff("top").to_h).to eq("keeps" => "1-1", "verdict" => "keep",
+                                              "reason" => "the interface of mid did not change")
+  end
+
+  it "rebuilds a candidate whose closure holds a changed interface, also two steps down" do
+    verdicts = run_with("changed")
+    expect(verdicts.cutoff("mid").to_h).to eq("keeps" => "1-1", "verdict" => "rebuild", "reason" => "the interface of lib changed")
+    # mid is rebuilt and, built for the first time here, has no verdict; lib changed anyway
+    expect(verdicts.cutoff("top").verdict).to eq("rebuild")
+    expect(verdicts.cutoff("lib")).to be_nil # no candidate
+  end
+end
