@@ -40,7 +40,7 @@ module Relspec
       selected = Target.select(targets.empty? ? nil : targets, all, effective.release)
       sign_with = effective.repository&.sign_with
       repository = AptRepository.new(out, targets: selected, sign_with: sign_with)
-      stale = repository.configure
+      stale = repository.configure(left_out: all - selected)
       notes&.puts(Publish::StaleRepreproLock.note(stale)) if stale
       sources = Sources.new(resolution, timeout: timeout, cache: Apt::Cache.new(Apt::Cache.default_dir))
       key = sign_with && export_key(sign_with, repository.dir, effective.release)

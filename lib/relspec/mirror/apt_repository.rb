@@ -6,6 +6,9 @@ require_relative "../reprepro/runner"
 require_relative "binary_index"
 require_relative "folder"
 require_relative "../publish/stale_reprepro_lock"
+require_relative "../display_path"
+require_relative "../printable"
+require_relative "../target"
 
 module Relspec
   module Mirror
@@ -20,6 +23,7 @@ module Relspec
       # +targets+: every Target the mirror holds; +sign_with+: a gpg key id.
       def initialize(dir, targets:, sign_with: nil)
         @dir = File.expand_path(dir)
+        @targets = targets
         @config = Reprepro::Config.new(label: "relspec mirror", targets: targets, source: false, sign_with: sign_with,
                                        description: "field mirror of a release and what it needs from %<codename>s")
         @reprepro = Reprepro::Runner.new(@dir)
@@ -30,8 +34,12 @@ module Relspec
       # reprepro uses the mirror (a run killed while reprepro worked left it,
       # and every later reprepro would wait for it, then fail): publish's own
       # rule, Publish::StaleRepreproLock. The removed lock's path, or nil.
-      def configure
+      # +left_out+: the spec's targets this run does not make (--target); one
+      # the mirror holds is refused before conf/ is written: conf/ without it
+      # would have reprepro drop its packages (or refuse its folders).
+      def configure(left_out: [])
         Folder.claim(@dir)
+        refuse_dropping(held_targets & left_out)
         @config.write(File.join(@dir, "conf"))
         begin
           Publish::StaleRepreproLock.clear(@dir)
@@ -71,6 +79,31 @@ module Relspec
       # The pool file of +binary+ as the mirror's index names it.
       def pool_file(binary)
         File.join(@dir, binary.filename)
+      end
+
+      # The targets the mirror's conf/distributions (relspec's own, from the
+      # previous run) configures; none for a new mirror.
+      def held_targets
+        conf = File.join(@dir, "conf", "distributions")
+        return [] unless File.file?(conf)
+
+        File.read(conf).split(/\n\s*\n/).flat_map do |block|
+          codename = block[/^Codename: (\S+)$/, 1]
+          archs = block[/^Architectures: (.*)$/, 1].to_s.split
+          codename ? archs.map { |arch| Target.new(codename, arch).freeze } : []
+        end
+      end
+
+      private
+
+      def refuse_dropping(dropped)
+        return if dropped.empty?
+
+        made = @targets.join(", ")
+        raise InvalidOption, "the mirror in #{Printable.text(DisplayPath.of(@dir))} holds #{dropped.map(&:to_s).sort.join(', ')} " \
+                             "too: a run for #{made} alone would remove it from the mirror; give a --target for every " \
+                             "target it holds (#{(held_targets | @targets).map(&:to_s).sort.join(', ')}), or make the " \
+                             "mirror of #{made} in another --out"
       end
     end
   end
