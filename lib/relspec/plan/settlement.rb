@@ -20,8 +20,9 @@ module Relspec
       Work = Struct.new(:input, :overlay, :digest, keyword_init: true)
 
       # +inputs+: DebianInputs; +versioning+: Versioning; +overlays+: the
-      # Debian::Overlay of a package on an architecture (+overlays.call(name,
-      # arch)+), read from overlays/ by Plan.read.
+      # Debian::Overlay of a package on a target (+overlays.call(name,
+      # target)+: its codename's and architecture's layers), read from
+      # overlays/ by Plan.read.
       def initialize(catalog:, inputs:, versioning:, overlays:)
         @catalog = catalog
         @inputs = inputs
@@ -62,7 +63,7 @@ module Relspec
         package = @catalog.package(decision.package)
         upstream = Debian::PackageVersion.of_package(package)
         input = @inputs.for(target, decision, upstream, decisions)
-        overlay = @overlays.call(package.name, target.arch)
+        overlay = @overlays.call(package.name, target)
         digest = Digest::SHA256.hexdigest(Debian::DebianDir.digest(Debian::DebianDir.render(input, version: nil)) +
                                           overlay.signature + source_signature(package))
         result = @versioning.settle(target: target, package: package.name, deb_name: decision.deb_name,

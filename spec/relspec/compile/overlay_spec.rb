@@ -117,6 +117,36 @@ RSpec.describe "relspec compile with per-architecture overlays" do
   end
 end
 
+RSpec.describe "relspec compile with per-distribution overlays" do
+  it "applies @<codename>/ overlays to that distribution's targets only, and moves only their revisions" do
+    Dir.mktmpdir("relspec-codename-overlay") do |dir|
+      fixture = ReleaseFixture.new(dir)
+      fixture.standalone("two", select: ["base/cmake"], targets: "bionic: [amd64], focal: [amd64]")
+      expect(relspec("compile", "specs/two.yml", "--out", "out", chdir: dir).exit_code).to eq(0)
+      first = %w[bionic focal].to_h { |codename| [codename, Dir.glob(File.join(dir, "out", "two", "#{codename}-amd64", "*", "*.dsc")).map { |f| File.basename(f) }] }
+
+      overlay = File.join(dir, "overlays", "base", "cmake", "@focal", "debian")
+      FileUtils.mkdir_p(overlay)
+      File.write(File.join(overlay, "NOTE"), "focal only\n")
+      run = relspec("compile", "specs/two.yml", "--out", "out", chdir: dir)
+      expect(run.exit_code).to eq(0), run.stderr
+      notes = %w[bionic focal].to_h do |codename|
+        tarball = Dir.glob(File.join(dir, "out", "two", "#{codename}-amd64", "*", "*.debian.tar.xz")).max_by { |f| File.mtime(f) }
+        [codename, IO.popen(["tar", "-xJOf", tarball, "debian/NOTE"], err: File::NULL, &:read)]
+      end
+      expect(notes).to eq("bionic" => "", "focal" => "focal only\n")
+      second = %w[bionic focal].to_h { |codename| [codename, Dir.glob(File.join(dir, "out", "two", "#{codename}-amd64", "*", "*.dsc")).map { |f| File.basename(f) }] }
+      expect(second["bionic"]).to eq(first["bionic"])
+      expect(second["focal"]).not_to eq(first["focal"])
+
+      FileUtils.mkdir_p(File.join(dir, "overlays", "base", "cmake", "@focal", "files"))
+      run = relspec("compile", "specs/two.yml", "--out", "out", chdir: dir)
+      expect(run.exit_code).to eq(1)
+      expect(run.stderr).to include("error[overlay]: files/ cannot be per distribution (use a patch in @focal/patches/)")
+    end
+  end
+end
+
 RSpec.describe "the lock between plan and compile" do
   it "keeps the debian/ digests through plan --write, so a later debian/ change still raises the revision" do
     Dir.mktmpdir("relspec-lock-digests") do |dir|
