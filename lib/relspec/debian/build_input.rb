@@ -18,14 +18,16 @@ module Relspec
     # (beyond the ones every env.sh sets), sorted; +prefixes+: the prefix on the
     # target of each package the package's defines name
     # (Catalog::PrefixMarkers), by autoproj name; one without a decision on
-    # the target is missing. Immutable.
+    # the target is missing; +ruby_executable+: the target's Ruby, for a
+    # define naming the workspace's (Catalog::CmakeDefines::RUBY). Immutable.
     BuildInput = Struct.new(:package, :deb_name, :upstream, :codename, :release, :maintainer, :install_dir,
                             :debhelper_compat, :dependencies, :apt, :gems, :gem, :ruby_dirs, :closure_tools,
-                            :closure_environment, :prefixes, keyword_init: true) do
+                            :closure_environment, :prefixes, :ruby_executable, keyword_init: true) do
       def initialize(debhelper_compat: BuildInput::DEFAULT_COMPAT, gem: nil, ruby_dirs: [], closure_tools: [],
-                     closure_environment: [], prefixes: {}, **fields)
+                     closure_environment: [], prefixes: {}, ruby_executable: "/usr/bin/ruby", **fields)
         super(debhelper_compat: debhelper_compat, gem: gem, ruby_dirs: ruby_dirs, closure_tools: closure_tools,
-              closure_environment: closure_environment.dup.freeze, prefixes: prefixes.dup.freeze, **fields)
+              closure_environment: closure_environment.dup.freeze, prefixes: prefixes.dup.freeze,
+              ruby_executable: ruby_executable, **fields)
         freeze
       end
     end

@@ -10,6 +10,7 @@ require_relative "environment_file"
 require_relative "../osdeps/trust"
 require_relative "../yaml/writer"
 require_relative "../catalog/prefix_markers"
+require_relative "../catalog/cmake_defines"
 require_relative "../catalog/ruby_extension"
 
 module Relspec
@@ -133,7 +134,8 @@ module Relspec
       # shell word; "$" is doubled for make. A define naming another
       # package's prefix gets the prefix the release gives that package; one
       # naming a package the release does not have on the target is left
-      # out, as if the package set had not seen the package.
+      # out, as if the package set had not seen the package. One naming the
+      # workspace's Ruby gets the target's.
       ROCK_CMAKE_DEFINES = { "CMAKE_BUILD_TYPE" => "Release", "ROCK_TEST_ENABLED" => "OFF" }.freeze
 
       def cmake_options
@@ -150,7 +152,7 @@ module Relspec
           names = value.scan(Catalog::PrefixMarkers::REFERENCE).flatten
           next unless names.all? { |package| @in.prefixes.key?(package) }
 
-          [name, value.gsub(Catalog::PrefixMarkers::REFERENCE) { @in.prefixes.fetch(Regexp.last_match(1)) }]
+          [name, value.gsub(Catalog::PrefixMarkers::REFERENCE) { @in.prefixes.fetch(Regexp.last_match(1)) }.gsub(Catalog::CmakeDefines::RUBY) { @in.ruby_executable }]
         end.to_h
       end
 

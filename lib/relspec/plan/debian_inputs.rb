@@ -35,6 +35,7 @@ module Relspec
           package: package, deb_name: decision.deb_name, upstream: upstream, codename: target.codename,
           release: @effective.release, maintainer: @effective.maintainer, install_dir: install_dir_of(decision),
           debhelper_compat: distribution.debhelper_compat, ruby_dirs: distribution.ruby_install_dirs(target.arch),
+          ruby_executable: distribution.ruby_executable,
           dependencies: dependencies_of(package, decisions), apt: os.apt,
           gems: Debian::ControlRelations.distribution_gems(os, @release_catalog.gems.keys),
           gem: @release_catalog.gems[package.name],

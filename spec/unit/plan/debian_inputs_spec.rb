@@ -27,7 +27,8 @@ RSpec.describe Relspec::Plan::DebianInputs do
   end
   # CMake defines naming other packages' prefixes (Catalog::PrefixMarkers), by package
   let(:defines) do
-    { "base/logging" => { "CM" => "${prefix:base/cmake}/lib", "GONE" => "${prefix:not/released}", "TYPE" => "Release" } }
+    { "base/logging" => { "CM" => "${prefix:base/cmake}/lib", "GONE" => "${prefix:not/released}", "TYPE" => "Release",
+                          "RUBY_EXECUTABLE" => "${ruby}" } }
   end
   let(:catalog) do
     packages = graph.to_h do |name, (type, dependencies, apt)|
@@ -107,7 +108,8 @@ RSpec.describe Relspec::Plan::DebianInputs do
     logging = input("base/logging")
     expect(logging.prefixes).to eq("base/cmake" => "/opt/rock/r/rock-r-base-cmake")
     rules = Relspec::Debian::DebianDir.render(logging, version: "1.0-1~bookworm").fetch("rules").first
-    expect(rules).to include("-DCM=/opt/rock/r/rock-r-base-cmake/lib -DTYPE=Release -DCMAKE_INSTALL_PREFIX")
+    expect(rules).to include("-DCM=/opt/rock/r/rock-r-base-cmake/lib -DRUBY_EXECUTABLE=/usr/bin/ruby3.1 -DTYPE=Release " \
+                             "-DCMAKE_INSTALL_PREFIX")
     expect(rules).not_to include("GONE")
     expect(input("base/logging", decisions("base/cmake" => :system)).prefixes).to eq("base/cmake" => "/usr")
   end
