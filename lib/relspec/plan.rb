@@ -65,7 +65,9 @@ module Relspec
       root = project_root(path)
       Facts.new(resolution: resolution, release_catalog: release_catalog, ancestors: ancestors, inventory: inventory,
                 distribution: distribution, own: own, previous: previous, lock_path: lock_path, project_root: root,
-                overlays: ->(name, arch) { Debian::Overlay.for(root, name, arch: arch) },
+                overlays: lambda { |name, target|
+                  Debian::Overlay.for(root, name, arch: target.arch, codename: target.codename)
+                },
                 uncommitted: uncommitted_of(release_catalog))
     end
 

@@ -7,7 +7,9 @@ require "fileutils"
 # its files. The including class defines PACKAGES (autoproj name =>
 # [bundle, folder under src/]).
 module FixtureWorkspace
-  BUNDLES = File.expand_path("../../../shared/fixtures/rock-repos", __dir__)
+  # RELSPEC_ROCK_REPOS: where they are when the checkout has no ../shared
+  # beside it (a git worktree in another folder)
+  BUNDLES = ENV.fetch("RELSPEC_ROCK_REPOS") { File.expand_path("../../../shared/fixtures/rock-repos", __dir__) }
 
   attr_reader :root
 

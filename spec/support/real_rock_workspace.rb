@@ -117,12 +117,13 @@ class RealRockWorkspace
     # as rock-core/buildconf's init.rb: the `github:` shorthand of the manifest
     write("autoproj/init.rb", "require 'autoproj/git_server_configuration'\n")
     # orocos.toolchain defines ruby-dev in orocos.osdeps-ruby30 and -ruby32
-    # (as `ignore`) but has no -ruby31 file: on bookworm's Ruby autoproj
-    # stops at binding_of_caller's ruby-dev. A Rock maintainer adds the
-    # missing definition in the workspace configuration, as here.
-    # (autoproj reads <name>.osdeps-ruby31 beside an existing <name>.osdeps)
+    # (as `ignore`) but has no -ruby31 file nor -ruby33: on bookworm's
+    # Ruby (3.1) and trixie's (3.3) autoproj stops at binding_of_caller's
+    # ruby-dev. A Rock maintainer adds the missing definition in the
+    # workspace configuration, as here. (autoproj reads
+    # <name>.osdeps-ruby<NN> beside an existing <name>.osdeps)
     write("autoproj/workspace.osdeps", "{}\n")
-    write("autoproj/workspace.osdeps-ruby31", "ruby-dev:\n  default: ignore\n")
+    %w[ruby31 ruby33].each { |ruby| write("autoproj/workspace.osdeps-#{ruby}", "ruby-dev:\n  default: ignore\n") }
   end
 
   # Where autoproj looks for a remote package set it has checked out:

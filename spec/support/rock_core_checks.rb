@@ -30,10 +30,16 @@ class RockCoreChecks
 
   Result = Struct.new(:name, :passed, :summary, :problems, keyword_init: true)
 
-  def initialize(dir, tarball:, lists: "/var/lib/apt/lists")
+  # Debian's archive, read for the distribution's indices of a codename
+  # that is not this machine's (whose apt lists are read instead)
+  DEBIAN = "http://deb.debian.org/debian"
+
+  def initialize(dir, tarball:, codename: "bookworm", arch: "amd64", lists: "/var/lib/apt/lists")
     @dir = dir
     @repository = File.join(dir, "repository")
     @tarball = tarball
+    @codename = codename
+    @arch = arch
     @lists = lists
   end
 
@@ -43,13 +49,13 @@ class RockCoreChecks
     installed = install
     results << installed
     results.concat(use) if installed.passed
-    File.write(File.join(@dir, "checks.yml"), YAML.dump(results.map { |result| result.to_h.transform_keys(&:to_s) }))
+    File.write(File.join(@dir, "checks-#{@codename}-#{@arch}.yml"), YAML.dump(results.map { |result| result.to_h.transform_keys(&:to_s) }))
     results
   end
 
   def packages_index
-    Dir.glob(File.join(@repository, "dists", "*", "main", "binary-amd64", "Packages")).first or
-      raise "no Packages index below #{@repository}/dists (was the release published?)"
+    path = File.join(@repository, "dists", @codename, "main", "binary-#{@arch}", "Packages")
+    File.file?(path) ? path : raise("no #{path} (was the release published for #{@codename}/#{@arch}?)")
   end
 
   # The release's binary packages (no -dbgsym), from its Packages index.
@@ -60,7 +66,7 @@ class RockCoreChecks
   def debcheck
     Dir.mktmpdir("rock-core-debcheck") do |tmp|
       background = distribution_indices(tmp)
-      output, error, = Open3.capture3("dose-debcheck", "--deb-native-arch=amd64", "--failures", "--explain",
+      output, error, = Open3.capture3("dose-debcheck", "--deb-native-arch=#{@arch}", "--failures", "--explain",
                                       "--fg", packages_index, *background.flat_map { |file| ["--bg", file] })
       report = YAML.safe_load(output)
       raise "dose-debcheck failed: #{error.strip}" unless report.is_a?(Hash) && report["broken-packages"]
@@ -75,9 +81,8 @@ class RockCoreChecks
   def install
     @system = InstalledSystem.new(@tarball, system_dir)
     FileUtils.cp_r(@repository, @system.path("srv/release"))
-    codename = File.basename(File.dirname(packages_index, 3))
     File.write(@system.path("etc/apt/sources.list.d/release.list"),
-               "deb [trusted=yes] file:/srv/release #{codename} main\n")
+               "deb [trusted=yes] file:/srv/release #{@codename} main\n")
     names = package_names
     started = Process.clock_gettime(Process::CLOCK_MONOTONIC)
     @system.install([], packages: names + USER_TOOLS)
@@ -104,12 +109,16 @@ class RockCoreChecks
   private
 
   def system_dir
-    File.join(@dir, "system")
+    File.join(@dir, "system-#{@codename}-#{@arch}")
   end
 
-  # The distribution's Packages as this machine's apt has them, uncompressed.
+  # The distribution's Packages, uncompressed: as this machine's apt has
+  # them for its own codename, else main's from Debian's archive.
   def distribution_indices(tmp)
-    Dir.glob(File.join(@lists, "*_dists_bookworm*_binary-amd64_Packages*")).sort.map.with_index do |list, index|
+    lists = Dir.glob(File.join(@lists, "*_dists_#{@codename}*_binary-#{@arch}_Packages*")).sort
+    return [debian_index(tmp)] if lists.empty?
+
+    lists.map.with_index do |list, index|
       plain = File.join(tmp, "distribution-#{index}")
       text, status = Open3.capture2("/usr/lib/apt/apt-helper", "cat-file", list)
       raise "cannot read #{list}" unless status.success?
@@ -117,6 +126,15 @@ class RockCoreChecks
       File.write(plain, text)
       plain
     end
+  end
+
+  def debian_index(tmp)
+    plain = File.join(tmp, "distribution-#{@codename}")
+    url = "#{DEBIAN}/dists/#{@codename}/main/binary-#{@arch}/Packages.xz"
+    _, error, status = Open3.capture3("sh", "-c", 'curl -fsS "$1" | xz -d > "$2"', "sh", url, plain)
+    raise "cannot read #{url}: #{error.strip}" unless status.success?
+
+    plain
   end
 
   def reasons(entry)

@@ -79,29 +79,49 @@ class RockCoreWorkspace < RealRockWorkspace
   end
 end
 
-# The release spec a maintainer writes for the Rock core on bookworm: the
-# whole layout (`rock.core`), the gems at the versions the toolchain needs
-# (facets 4 dropped what utilrb requires; rice 3 is what base/types' Ruby
-# bindings build with), the project's overlays, and leave_out with a reason
-# for what bookworm cannot have. The rest of the gems the package sets ask
-# for come from RubyGems (gem_source's default).
+# The release spec a maintainer writes for the Rock core, one spec for every
+# target (bookworm/amd64 and trixie/amd64 by default): the whole layout
+# (`rock.core`), the gems at the versions the toolchain needs (facets 4
+# dropped what utilrb requires; rice 3 is what base/types' Ruby bindings
+# build with), the project's overlays, and leave_out with a reason, for the
+# targets it concerns, for what a distribution cannot have. The rest of the
+# gems the package sets ask for come from RubyGems (gem_source's default).
+# bookworm's archive is this machine's own (its apt lists); any other
+# codename's is Debian's, verified with the debian-archive-keyring.
 class RockCoreRelease
   ROOT = File.expand_path("../..", __dir__)
   GEMS = { "facets" => "3.1.0", "rice" => "3.0.0", "rake-compiler" => "0.8.3" }.freeze
-  QT4 = "needs Qt4 (libqt4-dev, libqt4-opengl-dev, qt4-qmake), which bookworm lacks"
+  TARGETS = %w[bookworm/amd64 trixie/amd64].freeze
+  HOST_CODENAME = "bookworm"
+  DEBIAN = "http://deb.debian.org/debian"
+  DEBIAN_KEYRING = "/usr/share/keyrings/debian-archive-keyring.gpg"
+  # Debian dropped Qt4 in bullseye: no later codename has it
+  QT4 = "needs Qt4 (libqt4-dev, libqt4-opengl-dev, qt4-qmake), which Debian dropped in bullseye"
+  QTRUBY = "needs qtruby (Ruby bindings of Qt4), which Debian dropped in bullseye"
+  # match => [reason, codenames it applies to (nil: every target)]
   LEFT_OUT = {
-    "gui/vizkit" => "needs qtruby (Ruby bindings of Qt4), which bookworm lacks",
-    "gui/qtpropertybrowser" => QT4, "gui/rock_widget_collection" => QT4, "gui/vizkit3d" => QT4
+    "gui/vizkit" => [QTRUBY, nil], "gui/qtpropertybrowser" => [QT4, nil],
+    "gui/rock_widget_collection" => [QT4, nil], "gui/vizkit3d" => [QT4, nil]
   }.freeze
 
-  attr_reader :dir
+  attr_reader :dir, :targets
 
-  def initialize(dir)
+  def initialize(dir, targets: TARGETS)
     @dir = File.expand_path(dir)
+    @targets = targets.map { |target| target.split("/", 2) }.freeze
   end
 
   def spec_path
     File.join(dir, "specs", "rock-core.yml")
+  end
+
+  def codenames
+    targets.map(&:first).uniq
+  end
+
+  # out/rock-core/<codename>-<arch>: where relspec build writes a target's results
+  def target_dirs
+    targets.map { |codename, arch| "#{codename}-#{arch}" }
   end
 
   def workspace
@@ -118,18 +138,41 @@ class RockCoreRelease
   end
 
   def spec_text
-    left_out = LEFT_OUT.map { |match, reason| "  - { match: #{match}, reason: \"#{reason}\", targets: [bookworm] }\n" }
     <<~YAML
       release: rock-core
       maintainer: Rock core release <rock-core@relspec.invalid>
       workspace: ../workspace
       select: [rock.core]
-      targets: { bookworm: [amd64] }
-      distributions: { bookworm: { archive: { host: true } } }
+      targets: { #{targets_text} }
+      distributions:
+      #{distributions_text}
       repository: { path: ../repository, trusted: true }
       gems: { #{GEMS.map { |name, version| "#{name}: #{version}" }.join(', ')} }
       leave_out:
-      #{left_out.join}
+      #{left_out_text}
     YAML
+  end
+
+  private
+
+  def targets_text
+    codenames.map { |codename| "#{codename}: [#{targets.select { |c, _| c == codename }.map(&:last).join(', ')}]" }
+             .join(", ")
+  end
+
+  def distributions_text
+    codenames.map do |codename|
+      archive = codename == HOST_CODENAME ? "{ host: true }" : "{ url: \"#{DEBIAN}\", keyring: #{DEBIAN_KEYRING} }"
+      "  #{codename}: { archive: #{archive} }"
+    end.join("\n")
+  end
+
+  def left_out_text
+    LEFT_OUT.filter_map do |match, (reason, only)|
+      concerned = only ? codenames & only : codenames
+      next if concerned.empty?
+
+      "  - { match: #{match}, reason: \"#{reason}\", targets: [#{concerned.join(', ')}] }"
+    end.join("\n")
   end
 end

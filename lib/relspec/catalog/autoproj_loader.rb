@@ -298,7 +298,8 @@ module Relspec
           "package_set" => definition.package_set.name, "build_type" => build_type(autobuild),
           "vcs" => vcs_data(ws, definition.vcs), "source_dir" => relative(ws, autobuild.srcdir),
           "checked_out" => definition.checked_out?, "dependencies" => autobuild.dependencies.sort,
-          "optional_dependencies" => optional_packages.sort, "defines" => CmakeDefines.of(autobuild, root_dir: ws.root_dir, markers: markers),
+          "optional_dependencies" => optional_packages.sort,
+          "defines" => CmakeDefines.of(autobuild, root_dir: ws.root_dir, markers: markers, ruby: ws.config.ruby_executable),
           "environment" => PackageEnvironment.of(autobuild, root_dir: ws.root_dir, markers: markers),
           "orogen_arguments" => OrogenArguments.of(autobuild), "extension_task" => RubyExtension.setup_task(autobuild),
           "patches" => ImportPatch.list_of(autobuild.importer) { |path| relative(ws, path) }

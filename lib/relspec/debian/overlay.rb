@@ -12,9 +12,13 @@ module Relspec
     #                  (the orig tarball stays the upstream tree: OverlayPatch)
     #   patches/*.patch quilt patches, listed in debian/patches/series in name order
     #   debian/…       files replacing the generated debian/ ones
+    #   @<codename>/patches, @<codename>/debian   the same for one
+    #                  distribution only (an upstream incompatibility with its
+    #                  toolchain), over the common ones
     #   @<arch>/patches, @<arch>/debian   the same for one architecture only,
-    #                  over the common ones (files/ cannot be per architecture:
-    #                  the orig tarball is the same for every target)
+    #                  over those (files/ cannot be per codename or
+    #                  architecture: the orig tarball is the same for every
+    #                  target)
     # In overlay files (not patches), @RELSPEC_INSTALL_DIR@, @RELSPEC_RELEASE@
     # and @RELSPEC_PACKAGE@ are replaced. Links are refused, so an overlay can
     # never reach outside its package's tree.
@@ -27,9 +31,9 @@ module Relspec
       # comment sign, nothing that reads as an option.
       PATCH_NAME = /\A[A-Za-z0-9][A-Za-z0-9._+~=-]*\.patch\z/
 
-      def self.for(root, package_name, arch: nil)
+      def self.for(root, package_name, arch: nil, codename: nil)
         refuse_linked_folders(root, package_name)
-        new(File.join(root, "overlays", package_name), arch)
+        new(File.join(root, "overlays", package_name), arch, codename: codename)
       end
 
       # overlays/<package> (each of its folders) must be a real folder of the
@@ -51,13 +55,18 @@ module Relspec
       end
       private_class_method :refuse_linked_folders
 
-      def initialize(dir, arch = nil)
+      # +codename+, +arch+: the target's; their layers (@<codename>/,
+      # @<arch>/) go over the common one in that order.
+      def initialize(dir, arch = nil, codename: nil)
         @dir = dir
         @arch = arch
-        return unless arch && File.directory?(File.join(dir, "@#{arch}", "files"))
+        @layers = [codename && ["@#{codename}", "distribution"], arch && ["@#{arch}", "architecture"]].compact.freeze
+        @layers.each do |layer, what|
+          files = File.join(dir, layer, "files")
+          next unless File.directory?(files)
 
-        raise InvalidInput, [problem(File.join(dir, "@#{arch}", "files"),
-                                     "files/ cannot be per architecture (use a patch in @#{arch}/patches/)")]
+          raise InvalidInput, [problem(files, "files/ cannot be per #{what} (use a patch in #{layer}/patches/)")]
+        end
       end
 
       def empty?
@@ -86,16 +95,15 @@ module Relspec
       # what is emitted.
       def signature
         parts = %w[files patches debian].map { |part| [part, read_tree(part)] }
-        parts += %w[patches debian].map { |part| ["@#{@arch}/#{part}", read_tree("@#{@arch}/#{part}")] } if @arch
+        parts += @layers.flat_map { |layer, _| %w[patches debian].map { |part| ["#{layer}/#{part}", read_tree("#{layer}/#{part}")] } }
         parts.flat_map { |part, tree| tree.sort.map { |path, content| "#{part}/#{path}\0#{content}" } }.join("\0")
       end
 
       private
 
-      # The common part with the architecture's over it.
+      # The common part with the distribution's, then the architecture's, over it.
       def layered(part)
-        common = read_tree(part)
-        @arch ? common.merge(read_tree("@#{@arch}/#{part}")).sort.to_h : common
+        @layers.reduce(read_tree(part)) { |tree, (layer, _)| tree.merge(read_tree("#{layer}/#{part}")) }.sort.to_h
       end
 
       def read_tree(part)
@@ -128,9 +136,10 @@ module Relspec
                                                     "(no spaces, newlines or #), e.g. 01-fix-build.patch")]
       end
 
+      # the file a patch name came from: the last layer that has it
       def patch_path(name)
-        common = File.join(@dir, "patches", name)
-        @arch && !File.exist?(common) ? File.join(@dir, "@#{@arch}", "patches", name) : common
+        layer = @layers.reverse.map(&:first).find { |dir| File.exist?(File.join(@dir, dir, "patches", name)) }
+        layer ? File.join(@dir, layer, "patches", name) : File.join(@dir, "patches", name)
       end
 
       def substitute(content, substitutions)

@@ -5,6 +5,7 @@ require_relative "../debian/build_input"
 require_relative "../release_specs/values/prefixes"
 require_relative "../catalog/prefix_markers"
 require_relative "../catalog/ruby_extension"
+require_relative "../catalog/cmake_defines"
 
 module Relspec
   module Plan
@@ -41,7 +42,8 @@ module Relspec
           gem: @release_catalog.gems[package.name],
           closure_tools: closure_tools(package, target, decisions),
           closure_environment: closure_environment(package, target, decisions),
-          defines: defines_of(package, decisions), extension_task: Catalog::RubyExtension.checked(package)
+          defines: defines_of(package, decisions, distribution.ruby_executable),
+          extension_task: Catalog::RubyExtension.checked(package)
         )
       end
 
@@ -49,14 +51,17 @@ module Relspec
       # to another package's prefix (Catalog::PrefixMarkers) becomes the
       # prefix the release gives that package there; a define naming a
       # package without a decision on the target is left out, as if the
-      # package set had not seen the package.
-      def defines_of(package, decisions)
+      # package set had not seen the package. A define naming the
+      # workspace's Ruby (Catalog::CmakeDefines::RUBY) gets +ruby+, the
+      # target's.
+      def defines_of(package, decisions, ruby)
         prefixes = prefixes_of(package, decisions)
         package.defines.filter_map do |name, value|
           names = value.scan(Catalog::PrefixMarkers::REFERENCE).flatten
           next unless names.all? { |reference| prefixes.key?(reference) }
 
-          [name, value.gsub(Catalog::PrefixMarkers::REFERENCE) { prefixes.fetch(Regexp.last_match(1)) }]
+          [name, value.gsub(Catalog::PrefixMarkers::REFERENCE) { prefixes.fetch(Regexp.last_match(1)) }
+                      .gsub(Catalog::CmakeDefines::RUBY) { ruby }]
         end.to_h
       end
 

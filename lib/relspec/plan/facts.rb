@@ -12,7 +12,7 @@ module Relspec
     # +own+: OwnRepository (what the release's repository holds);
     # +previous+: the Lock read (nil: none, or discarded); +lock_path+: where
     # the lock is written; +project_root+: where specs/, releases/ and
-    # overlays/ are; +overlays+: callable (package name, arch) →
+    # overlays/ are; +overlays+: callable (package name, Target) →
     # Debian::Overlay; +uncommitted+: name => Catalog::UncommittedChanges::Change
     # for the selected checkouts with changes beyond their commit.
     Facts = Struct.new(:resolution, :release_catalog, :ancestors, :inventory, :distribution, :own, :previous,

@@ -22,8 +22,9 @@ module Relspec
       Work = Struct.new(:input, :overlay, :digest, keyword_init: true)
 
       # +inputs+: DebianInputs; +versioning+: Versioning; +overlays+: the
-      # Debian::Overlay of a package on an architecture (+overlays.call(name,
-      # arch)+), read from overlays/ by Plan.read.
+      # Debian::Overlay of a package on a target (+overlays.call(name,
+      # target)+: its codename's and architecture's layers), read from
+      # overlays/ by Plan.read.
       # +rising+: RisingUpstream, which keeps an archive import's version
       # from going back (nil: versions as the archives' times make them).
       def initialize(catalog:, inputs:, versioning:, overlays:, rising: nil)
@@ -78,7 +79,7 @@ module Relspec
         package = @catalog.package(decision.package)
         upstream = upstream_of(target, decision, package)
         input = @inputs.for(target, decision, upstream, decisions)
-        overlay = @overlays.call(package.name, target.arch)
+        overlay = @overlays.call(package.name, target)
         digest = digest_of(input, overlay, package)
         result = @versioning.settle(target: target, package: package.name, deb_name: decision.deb_name,
                                     upstream: upstream, digest: digest)

@@ -21,6 +21,12 @@ module Relspec
             debhelper_compat: debhelper_compat, ruby: ruby).freeze
       end
 
+      # The distribution's Ruby as a path (/usr/bin/ruby3.3, from the
+      # ruby3.3 package); /usr/bin/ruby (the ruby package's) when unknown.
+      def ruby_executable
+        ruby ? "/usr/bin/ruby#{ruby}" : "/usr/bin/ruby"
+      end
+
       # autoproj's keyword for the distribution's Ruby ("ruby31"), or nil.
       def ruby_version_keyword
         ruby && "ruby#{ruby.delete('.')}"

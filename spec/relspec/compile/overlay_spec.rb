@@ -90,21 +90,39 @@ RSpec.describe "relspec compile with overlays" do
   end
 end
 
-RSpec.describe "relspec compile with per-architecture overlays" do
+# What a compiled target folder (out/<release>/<codename>-<arch>) holds.
+module CompiledTarget
+  # debian/NOTE of the newest debian.tar.xz there ("" when it has none)
+  def debian_note(target_dir)
+    tarball = Dir.glob(File.join(target_dir, "*", "*.debian.tar.xz")).max_by { |path| File.mtime(path) }
+    IO.popen(["tar", "-xJOf", tarball, "debian/NOTE"], err: File::NULL, &:read)
+  end
+
+  def dsc_names(target_dir)
+    Dir.glob(File.join(target_dir, "*", "*.dsc")).map { |path| File.basename(path) }.sort
+  end
+
+  # a project folder with specs/<release>.yml releasing base/cmake for +targets+
+  def with_release(release, targets)
+    Dir.mktmpdir("relspec-#{release}-overlay") do |dir|
+      ReleaseFixture.new(dir).standalone(release, select: ["base/cmake"], targets: targets)
+      yield dir
+    end
+  end
+end
+
+RSpec.describe "relspec compile with per-architecture and per-distribution overlays" do
+  include CompiledTarget
+
   it "applies @<arch>/ overlays to that architecture only, over the common ones" do
-    Dir.mktmpdir("relspec-arch-overlay") do |dir|
-      fixture = ReleaseFixture.new(dir)
-      fixture.standalone("arch", select: ["base/cmake"], targets: "bionic: [amd64, arm64]")
+    with_release("arch", "bionic: [amd64, arm64]") do |dir|
       overlay = File.join(dir, "overlays", "base", "cmake")
       FileUtils.mkdir_p([File.join(overlay, "debian"), File.join(overlay, "@arm64", "debian")])
       File.write(File.join(overlay, "debian", "NOTE"), "common\n")
       File.write(File.join(overlay, "@arm64", "debian", "NOTE"), "arm64 only\n")
       run = relspec("compile", "specs/arch.yml", "--out", "out", chdir: dir)
       expect(run.exit_code).to eq(0), run.stderr
-      notes = %w[amd64 arm64].to_h do |arch|
-        tarball = Dir.glob(File.join(dir, "out", "arch", "bionic-#{arch}", "*", "*.debian.tar.xz")).first
-        [arch, IO.popen(["tar", "-xJOf", tarball, "debian/NOTE"], &:read)]
-      end
+      notes = %w[amd64 arm64].to_h { |arch| [arch, debian_note(File.join(dir, "out", "arch", "bionic-#{arch}"))] }
       expect(notes).to eq("amd64" => "common\n", "arm64" => "arm64 only\n")
       origs = %w[amd64 arm64].map { |arch| Digest::SHA256.file(Dir.glob(File.join(dir, "out", "arch", "bionic-#{arch}", "*", "*.orig.tar.gz")).first).hexdigest }
       expect(origs.uniq.size).to eq(1)
@@ -113,6 +131,29 @@ RSpec.describe "relspec compile with per-architecture overlays" do
       run = relspec("compile", "specs/arch.yml", "--out", "out", chdir: dir)
       expect(run.exit_code).to eq(1)
       expect(run.stderr).to include("error[overlay]: files/ cannot be per architecture")
+    end
+  end
+
+  it "applies @<codename>/ overlays to that distribution's targets only, and moves only their revisions" do
+    with_release("two", "bionic: [amd64], focal: [amd64]") do |dir|
+      expect(relspec("compile", "specs/two.yml", "--out", "out", chdir: dir).exit_code).to eq(0)
+      targets = %w[bionic focal].to_h { |codename| [codename, File.join(dir, "out", "two", "#{codename}-amd64")] }
+      first = targets.transform_values { |target| dsc_names(target) }
+
+      overlay = File.join(dir, "overlays", "base", "cmake", "@focal", "debian")
+      FileUtils.mkdir_p(overlay)
+      File.write(File.join(overlay, "NOTE"), "focal only\n")
+      run = relspec("compile", "specs/two.yml", "--out", "out", chdir: dir)
+      expect(run.exit_code).to eq(0), run.stderr
+      expect(targets.transform_values { |target| debian_note(target) }).to eq("bionic" => "", "focal" => "focal only\n")
+      second = targets.transform_values { |target| dsc_names(target) }
+      expect(second["bionic"]).to eq(first["bionic"])
+      expect(second["focal"]).not_to eq(first["focal"])
+
+      FileUtils.mkdir_p(File.join(dir, "overlays", "base", "cmake", "@focal", "files"))
+      run = relspec("compile", "specs/two.yml", "--out", "out", chdir: dir)
+      expect(run.exit_code).to eq(1)
+      expect(run.stderr).to include("error[overlay]: files/ cannot be per distribution (use a patch in @focal/patches/)")
     end
   end
 end

@@ -21,18 +21,20 @@ RSpec.describe "a define naming another package's prefix" do
         pkg.define 'DEP_CMAKE', File.join(package('external/dep').prefix, 'share', 'cmake')
         pkg.define 'GONE_PREFIX', package('external/gone').prefix
         pkg.define 'WORKSPACE_PREFIX', Autobuild.prefix
+        pkg.define 'RUBY_EXECUTABLE', Autoproj.config.ruby_executable
         pkg.env_set 'ROCK_PREFIX', File.join(pkg.prefix, 'share', 'app')
       end
     RUBY
     builder.create
     FileUtils.mkdir_p(File.join(@base, "specs"))
-    { "shared" => false, "separate" => true }.each do |release, separate|
+    { "shared" => [false, "bookworm: [amd64]"], "separate" => [true, "bookworm: [amd64]"],
+      "two" => [false, "bookworm: [amd64], trixie: [amd64]"] }.each do |release, (separate, targets)|
       File.write(File.join(@base, "specs", "#{release}.yml"), <<~YAML)
         release: #{release}
         maintainer: Rock Packaging <rock@example.org>
         workspace: ../workspace
         select: [app]
-        targets: { bookworm: [amd64] }
+        targets: { #{targets} }
         separate_prefixes: #{separate}
       YAML
     end
@@ -40,8 +42,8 @@ RSpec.describe "a define naming another package's prefix" do
 
   after(:all) { FileUtils.rm_rf(@base) if @base }
 
-  def debian_file(release, source, name)
-    tarball = Dir.glob(File.join(@base, "out", release, "**", "#{source}_*.debian.tar.xz")).first
+  def debian_file(release, source, name, target: "*")
+    tarball = Dir.glob(File.join(@base, "out", release, target, "**", "#{source}_*.debian.tar.xz")).first
     text, status = Open3.capture2("tar", "-xJOf", tarball, "debian/#{name}")
     raise "no debian/#{name} in #{tarball}" unless status.success?
 
@@ -65,5 +67,16 @@ RSpec.describe "a define naming another package's prefix" do
       # the package's own prefix in its environment is still its release prefix
       expect(debian_file(release, "rock-#{release}-app", "env.yml")).to include("- \"#{app_prefix}/share/app\"\n")
     end
+  end
+
+  # rock.core: `pkg.define "RUBY_EXECUTABLE", Autoproj.config.ruby_executable`,
+  # relspec's own Ruby when it loads the workspace (/usr/bin/ruby3.1 here)
+  it "names each target's Ruby where the package set names the workspace's" do
+    run = relspec("compile", "specs/two.yml", "--out", "out", chdir: @base)
+    expect(run.exit_code).to eq(0), run.stderr
+    rules = %w[bookworm trixie].to_h { |codename| [codename, debian_file("two", "rock-two-app", "rules", target: "#{codename}-amd64")] }
+    expect(rules["bookworm"]).to include("-DRUBY_EXECUTABLE=/usr/bin/ruby3.1 ")
+    expect(rules["trixie"]).to include("-DRUBY_EXECUTABLE=/usr/bin/ruby3.3 ")
+    expect(rules["trixie"]).not_to include(RbConfig.ruby)
   end
 end

@@ -19,8 +19,9 @@ RSpec.describe "the project's overlays on the real Rock sources" do
     @workspace = RealRockWorkspace.shared
   end
 
+  # the package a patch is for, without its @<codename>/@<arch> layer
   def package_of(patch)
-    File.dirname(patch, 2).split(%r{/(?:toolchain_)?overlays/}).last
+    File.dirname(patch, 2).split(%r{/(?:toolchain_)?overlays/}).last.sub(%r{/@[^/]+\z}, "")
   end
 
   # The toolchain's packages are in the shared workspace; the core release's
@@ -42,6 +43,15 @@ RSpec.describe "the project's overlays on the real Rock sources" do
   it "has a patch for each upstream bug docs/compile.md lists" do
     listed = File.read(File.join(CliRunner::ROOT, "docs", "compile.md")).scan(%r{`(overlays/[^`]+\.patch)`}).flatten
     expect(PATCHES.map { |patch| patch.delete_prefix("#{CliRunner::ROOT}/") }).to match_array(listed)
+  end
+
+  it "says for each listed patch the targets its layer gives it (@<codename>/: that distribution only)" do
+    rows = File.read(File.join(CliRunner::ROOT, "docs", "compile.md")).scan(%r{^\| `(overlays/[^`]+\.patch)` \| ([^|]+) \|})
+    expect(rows).not_to be_empty
+    rows.each do |path, targets|
+      layer = path[%r{/@([^/]+)/patches/}, 1]
+      expect(targets.strip).to eq(layer ? "#{layer} only" : "every target"), path
+    end
   end
 
   (PATCHES + TEST_PATCHES).each do |patch|

@@ -27,7 +27,8 @@ RSpec.describe Relspec::Plan::DebianInputs do
   end
   # CMake defines naming other packages' prefixes (Catalog::PrefixMarkers), by package
   let(:defines) do
-    { "base/logging" => { "CM" => "${prefix:base/cmake}/lib", "GONE" => "${prefix:not/released}", "TYPE" => "Release" } }
+    { "base/logging" => { "CM" => "${prefix:base/cmake}/lib", "GONE" => "${prefix:not/released}", "TYPE" => "Release",
+                          "RUBY_EXECUTABLE" => "${ruby}" } }
   end
   # rake tasks that compile an extension (Catalog::RubyExtension), by package
   let(:extension_tasks) { {} }
@@ -105,13 +106,17 @@ RSpec.describe Relspec::Plan::DebianInputs do
     expect(input("base/types", decisions("base/logging" => :system)).closure_tools).to eq(%w[cmake pkg-config])
   end
 
-  it "gives a define naming a package's prefix the release prefix of that package, leaving out unreleased ones" do
+  it "gives a define naming a package's prefix the release prefix of that package, leaving out unreleased ones, " \
+     "and one naming the workspace's Ruby the target's" do
     logging = input("base/logging")
-    expect(logging.defines).to eq("CM" => "/opt/rock/r/rock-r-base-cmake/lib", "TYPE" => "Release")
+    expect(logging.defines).to eq("CM" => "/opt/rock/r/rock-r-base-cmake/lib", "RUBY_EXECUTABLE" => "/usr/bin/ruby3.1",
+                                  "TYPE" => "Release")
     rules = Relspec::Debian::DebianDir.render(logging, version: "1.0-1~bookworm").fetch("rules").first
-    expect(rules).to include("-DCM=/opt/rock/r/rock-r-base-cmake/lib -DTYPE=Release -DCMAKE_INSTALL_PREFIX")
+    expect(rules).to include("-DCM=/opt/rock/r/rock-r-base-cmake/lib -DRUBY_EXECUTABLE=/usr/bin/ruby3.1 -DTYPE=Release " \
+                             "-DCMAKE_INSTALL_PREFIX")
     expect(rules).not_to include("GONE")
-    expect(input("base/logging", decisions("base/cmake" => :system)).defines).to eq("CM" => "/usr/lib", "TYPE" => "Release")
+    expect(input("base/logging", decisions("base/cmake" => :system)).defines)
+      .to eq("CM" => "/usr/lib", "RUBY_EXECUTABLE" => "/usr/bin/ruby3.1", "TYPE" => "Release")
   end
 
   # debian/ renders from BuildInput alone: the plan checks the task that

@@ -26,6 +26,12 @@ RSpec.describe Relspec::ReleaseSpec::Distributions do
         .to eq(["debian", %w[13 trixie default], "debian", "13,trixie"])
       expect([trixie.ruby, trixie.ruby_version_keyword, trixie.debhelper_compat]).to eq(["3.3", "ruby33", 13])
       expect(trixie.ruby_install_dirs("amd64")).to eq(%w[lib/ruby/3.3.0 lib/x86_64-linux-gnu/ruby/3.3.0])
+      expect(trixie.ruby_executable).to eq("/usr/bin/ruby3.3")
+    end
+
+    it "names the ruby package's /usr/bin/ruby for a distribution whose Ruby is not known" do
+      duke = described_class.with_overrides("duke" => { "type" => "debian", "labels" => %w[15 duke] }).fetch("duke")
+      expect(duke.ruby_executable).to eq("/usr/bin/ruby")
     end
 
     it "keeps its built-in facts when a spec only adds an archive" do
