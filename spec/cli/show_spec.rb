@@ -11,7 +11,7 @@ RSpec.describe "relspec show" do
     spec = YAML.safe_load(run.stdout)
     expect(spec).to include(
       "release" => "demo-child", "parent" => "demo-base", "ancestors" => ["demo-base"],
-      "targets" => { "bookworm" => ["amd64"] },
+      "targets" => { "bookworm" => ["amd64"], "trixie" => ["amd64"] },
       "maintainer" => "Rock Packaging <rock-dev@example.org>",
       "blacklist" => [{ "match" => "base/types", "reason" => "the project needs the 2020 types API" }],
       "pins" => { "base/types" => { "tag" => "v2.0.0" } },
@@ -25,7 +25,7 @@ RSpec.describe "relspec show" do
     run = relspec("show", "specs/demo-child.yml", "--origins")
     expect(run.exit_code).to eq(0), run.stderr
     lines = run.stdout.lines.map(&:rstrip)
-    expect(lines.grep(/^targets:/).first).to match(%r{# specs/demo-base\.yml:6:1$})
+    expect(lines.grep(/^targets:/).first).to match(%r{# specs/demo-base\.yml:7:1$})
     expect(lines.grep(%r{^  base/types:}).first).to match(%r{# specs/demo-child\.yml:11:3$})
     expect(lines.grep(/^release:/).first).to match(%r{# specs/demo-child\.yml:3:1$})
     expect(YAML.safe_load(run.stdout)).to eq(YAML.safe_load(relspec("show", "specs/demo-child.yml").stdout))
@@ -35,7 +35,7 @@ RSpec.describe "relspec show" do
     run = relspec("show", "specs/demo-child.yml", "--origins", "--format", "json")
     document = JSON.parse(run.stdout)
     expect(document["spec"]["package_prefix"]).to eq("rock")
-    expect(document["origins"]).to include("package_prefix" => "specs/demo-base.yml:15:1",
+    expect(document["origins"]).to include("package_prefix" => "specs/demo-base.yml:17:1",
                                            "pins.base/types" => "specs/demo-child.yml:11:3")
   end
 

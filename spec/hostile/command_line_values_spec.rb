@@ -13,7 +13,7 @@ RSpec.describe "relspec with control characters in its command-line values", :tm
   it "escapes --target in the not-a-target error, and keeps a newline in it from forging a line" do
     run = relspec("build", "specs/demo-base.yml", "--out", @dir, "--target", "bookworm/amd64#{esc}X\nrelspec: ok")
     expect([run.exit_code, run.stderr]).to eq(
-      [1, "relspec: error: bookworm/amd64\\e[31mX\\nrelspec: ok is not a target of demo-base (bookworm/amd64)\n"]
+      [1, "relspec: error: bookworm/amd64\\e[31mX\\nrelspec: ok is not a target of demo-base (bookworm/amd64, trixie/amd64)\n"]
     )
   end
 

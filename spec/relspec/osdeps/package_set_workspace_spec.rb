@@ -303,7 +303,7 @@ RSpec.describe "an autoproj workspace using relspec's package set" do
     expect(status.success?).to be(false)
     # issue 46, case 16: the user chose demo-child; demo-base is the ancestor lacking the system
     expect(output).to include("relspec package set: the release demo-child does not exist for debian 11,bullseye (amd64): " \
-                              "its ancestor demo-base is not built for it (demo-base is built for debian 12,bookworm)")
+                              "its ancestor demo-base is not built for it (demo-base is built for debian 12,bookworm; debian 13,trixie)")
   ensure
     File.write(config, saved) if saved
   end
