@@ -56,7 +56,8 @@ RSpec.describe "relspec plan with a hostile archive-versions cache", :tmpdir do
   # The archive-versions entry's path for the index as it is now.
   def entry
     archive = Relspec::Apt::Repository.new(Relspec::Apt::Fetcher.new(File.join(@dir, "debian")), trusted: true)
-    File.join(cache, "relspec", "apt", archive.index_digest("bookworm", "amd64"), "archive-versions")
+    File.join(cache, "relspec", "apt", archive.index_digest("bookworm", "amd64"),
+              Relspec::Plan::ArchiveVersions::CACHE_ENTRY)
   end
 
   def planned(run)

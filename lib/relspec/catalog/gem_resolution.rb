@@ -2,6 +2,7 @@
 
 require_relative "gem_archive"
 require_relative "gem_versions"
+require_relative "shadowed_gems"
 require_relative "../apt/version"
 require_relative "../debian/naming"
 require_relative "../debian/gem_version"
@@ -17,7 +18,9 @@ module Relspec
     # packages, is:
     #
     # - the distribution's ruby-<gem> when every target whose archive was
-    #   read has it at a version all the requirements on it accept;
+    #   read has it at a version all the requirements on it accept, unless
+    #   one of them has it depending on a gem the release packages
+    #   (ShadowedGems: the release's copy would shadow the one it was made for);
     # - otherwise packaged here, at the version the lock recorded while it
     #   still fits (as Bundler keeps a Gemfile.lock), else the highest one
     #   of gem_source that fits; its own runtime dependencies are resolved
@@ -48,12 +51,15 @@ module Relspec
       # giving that); +locked+: name
       # => the version the lock recorded; +versions+: GemVersions; +fetch+:
       # (name, version) → GemArchive; +blacklisted+: name → bool;
-      # +location+: where gem_source is set (for errors).
-      def initialize(catalog:, selected:, pinned:, archives:, locked:, versions:, fetch:, blacklisted:, location:)
+      # +location+: where gem_source is set (for errors); +depends+: target
+      # name => {gem package => GemDepends} of its archive (or a callable
+      # giving that, read with +archives+).
+      def initialize(catalog:, selected:, pinned:, archives:, locked:, versions:, fetch:, blacklisted:, location:, depends: {})
         @catalog = catalog
         @selected = selected
         @pinned = pinned
         @archives = archives
+        @depends = depends
         @locked = locked
         @versions = versions
         @fetch = fetch
@@ -68,11 +74,14 @@ module Relspec
 
         # read only now: a release without gems never reads its distribution's archive
         @archives = @archives.call if @archives.respond_to?(:call)
+        @depends = @depends.call if @depends.respond_to?(:call)
         @requests = requests
         @chosen = {}
         @needs = {}
+        @shadowed = {}
         @problems = []
         walk((requests.keys + @pinned.keys).uniq.sort)
+        unshadow
         check_cycles
         raise InvalidInput, @problems unless @problems.empty?
 
@@ -122,7 +131,7 @@ module Relspec
 
         version = @pinned[name]
         # the same version as the planner sees it: 1.2 is not 1.2.0 there
-        if !@blacklisted.call(name) && everywhere?(name) { |found| found.to_s == version }
+        if !@blacklisted.call(name) && !@shadowed.key?(name) && everywhere?(name) { |found| found.to_s == version }
           @chosen[name] = :system
           return nil
         end
@@ -142,7 +151,7 @@ module Relspec
         return nil if current == :system && everywhere?(name, &fits)
         return nil if current && current != :system && fits.call(Gem::Version.new(current))
 
-        if @archives.values.none? || (current.nil? && everywhere?(name, &fits))
+        if @archives.values.none? || (current.nil? && !@shadowed.key?(name) && everywhere?(name, &fits))
           @chosen[name] = :system
           return nil
         end
@@ -151,6 +160,39 @@ module Relspec
 
         @chosen[name] = version
         fetch(name, version)
+      end
+
+      # The gems taken from the distributions that one of them has
+      # depending on a gem packaged here are packaged here too; they may
+      # shadow others in turn, so until none is left.
+      def unshadow
+        loop do
+          found = shadowed
+          break if found.empty?
+
+          found.each do |name, shadowing|
+            @shadowed[name] = shadowing
+            @chosen.delete(name)
+          end
+          walk(found.keys)
+        end
+      end
+
+      # name => ShadowedGems::Shadowing of the gems taken from the
+      # distributions now that a target's archive has depending on one
+      # packaged here (the first target by name that has).
+      def shadowed
+        packaged = @chosen.reject { |_, version| version == :system }
+        return {} if packaged.empty?
+
+        shadows = @depends.sort.map do |target, depends|
+          ShadowedGems.new(depends: depends || {}, packaged: packaged, codename: target.split("/").first)
+        end
+        @chosen.select { |_, version| version == :system }.keys.sort.filter_map do |name|
+          deb = Debian::Naming.distribution_gem(name)
+          shadowing = shadows.lazy.filter_map { |shadow| shadow.of(deb) }.first
+          shadowing && [name, shadowing]
+        end.to_h
       end
 
       # Whether every target's archive was read and has ruby-<name> at a
@@ -190,8 +232,9 @@ module Relspec
                 else
                   "it has #{listed.first(5).join(', ')}#{', …' if listed.size > 5}"
                 end
+        shadowed = " (not taken from the distribution: #{@shadowed[name]})" if @shadowed.key?(name)
         Diagnostic.error("gem-unresolvable", "no version of gem #{name} in #{@versions.where} fits what is asked: " \
-                                             "#{asked}; #{there}",
+                                             "#{asked}; #{there}#{shadowed}",
                          location: @location, hint: fetch_hint(name))
       end
 
@@ -240,12 +283,13 @@ module Relspec
       end
 
       def notes
+        shadowed = @shadowed.sort.map { |name, shadowing| "#{shadowing}: gem #{name} is packaged here" }
         unchecked = @archives.select { |_, found| found.nil? }.keys.sort
         asked = @requests.keys - @pinned.keys - @chosen.reject { |_, version| version == :system }.keys
-        return [] if unchecked.empty? || asked.empty?
+        return shadowed if unchecked.empty? || asked.empty?
 
-        ["gem osdeps are not checked on #{unchecked.join(', ')} (no distribution archive: " \
-         "distributions.<codename>.archive): #{asked.sort.join(', ')} taken as ruby-<gem> there"]
+        shadowed + ["gem osdeps are not checked on #{unchecked.join(', ')} (no distribution archive: " \
+                    "distributions.<codename>.archive): #{asked.sort.join(', ')} taken as ruby-<gem> there"]
       end
     end
   end

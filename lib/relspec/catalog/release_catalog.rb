@@ -44,8 +44,9 @@ module Relspec
       # +resolution+: a valid ReleaseSpec::Resolution; +cache+: a Catalog::Cache
       # for catalogs read from workspaces, or nil; +gem_fetch+: (name,
       # version) → GemArchive (default: from the spec's gem_source);
-      # +gem_archives+: a callable giving target name => {ruby-* name =>
-      # version} (nil for a target without an archive), called only when the
+      # +gem_archives+: a Plan::GemArchives (#call: target name => {ruby-*
+      # name => versions}, nil for a target without an archive; #depends:
+      # target name => {gem package => GemDepends}), read only when the
       # release has gems to resolve; without it (catalog show) only `gems:`
       # are packaged. +locked_gems+: name => the version the lock recorded.
       # Raises InvalidInput.
@@ -131,6 +132,7 @@ module Relspec
         blacklist = effective.blacklist
         selected = names.to_h { |codename, list| [codename, list.select { |name| catalog.package?(name) }] }
         GemResolution.new(catalog: catalog, selected: selected, pinned: effective.gems, archives: archives,
+                          depends: archives.method(:depends),
                           locked: locked, versions: GemVersions.new(effective.gem_source, base_dir: spec_dir, timeout: timeout),
                           fetch: fetch, blacklisted: ->(name) { blacklist.any? { |entry| entry.match?(name) } },
                           location: effective.origin("gem_source")&.location || resolution.spec_file.location(["release"]))

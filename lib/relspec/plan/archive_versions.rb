@@ -2,12 +2,17 @@
 
 require "digest"
 require_relative "../apt/dependency"
+require_relative "../debian/naming"
 
 module Relspec
   module Plan
     # What planning reads of a distribution's Packages index: the version of
     # each package and the versions packages provide with "=" (Ruby's
-    # default gems: "Provides: ruby-date (= 3.2.2)"). Kept in the apt cache
+    # default gems: "Provides: ruby-date (= 3.2.2)"), and which gem packages
+    # each gem package depends on (ruby-dry-types: ruby-dry-core, …; the
+    # names Naming::DISTRIBUTION_GEMS matches, a few thousand lines): a
+    # distribution gem the release's own gems would shadow is known by
+    # them (Catalog::ShadowedGems). Kept in the apt cache
     # under the SHA256 of the index file that is read (the compressed file,
     # checked against the Release file), so that a plan reads ~1.5 MB of
     # names and versions instead of parsing Debian's whole main index
@@ -15,8 +20,11 @@ module Relspec
     # cache entry are both here. The entry is untrusted: every line is
     # checked, and an entry with one bad line is made again from the index.
     class ArchiveVersions
-      CACHE_ENTRY = "archive-versions"
+      # -2: with the gem depends; an older relspec sharing the cache keeps
+      # its own entry rather than each making the other's again
+      CACHE_ENTRY = "archive-versions-2"
       SEPARATOR = "--- provided ---"
+      DEPENDS_SEPARATOR = "--- gem depends ---"
       # What a line of the entry can hold: a name without spaces or control
       # characters (Debian's names are [a-z0-9+.-]; an index may hold
       # anything) and a version dpkg accepts: exactly Apt::Version.valid?
@@ -27,6 +35,8 @@ module Relspec
       VERSION = /(?:\d+:[0-9](?:[A-Za-z0-9.+~:-]*[A-Za-z0-9.+~:])?|[0-9](?:[A-Za-z0-9.+~-]*[A-Za-z0-9.+~])?)/
       LINES = /\A(?:#{NAME} #{VERSION}\n)*\z/
       PAIR = /\A#{NAME} #{VERSION}\n\z/
+      # a gem package and the gem packages it depends on
+      DEPENDS_LINES = /\A(?:#{NAME}(?: #{NAME})+\n)*\z/
 
       # The versions of the +target+'s +component+ in +repository+ (an
       # Apt::Repository or Apt::HostLists), from +cache+ (Apt::Cache) when
@@ -52,9 +62,21 @@ module Relspec
 
           relations(field).select { |relation| relation.operator == "=" }.map { |relation| [relation.name, relation.version] }
         end
-        packages = index.names.map { |name| [name, index[name].version] }
-        new(packages.select { |pair| entry?(pair) }.to_h, provided.select { |pair| entry?(pair) })
+        packages = index.names.map { |name| [name, index[name].version] }.select { |pair| entry?(pair) }.to_h
+        new(packages, provided.select { |pair| entry?(pair) }, gem_depends(index, packages))
       end
+
+      # name => the gem packages its Depends name (every alternative), for
+      # the gem packages of +packages+ that depend on any.
+      def self.gem_depends(index, packages)
+        packages.keys.grep(Debian::Naming::DISTRIBUTION_GEMS).sort.filter_map do |name|
+          field = index[name].depends
+          names = field ? relations(field).map(&:name).grep(Debian::Naming::DISTRIBUTION_GEMS) : []
+          names = names.uniq.sort.select { |other| entry?([other, "0"]) }
+          [name, names.freeze] unless names.empty?
+        end.to_h
+      end
+      private_class_method :gem_depends
 
       # Whether [name, version] can be a line of the entry.
       def self.entry?(pair)
@@ -80,12 +102,16 @@ module Relspec
         sha256, body = text.split("\n", 2)
         return nil unless body && Digest::SHA256.hexdigest(body) == sha256
 
-        packages, provided = body.split("#{SEPARATOR}\n", 2)
-        return nil unless provided
+        packages, rest = body.split("#{SEPARATOR}\n", 2)
+        # an entry written before the gem depends were kept is made again
+        provided, depends = rest&.split("#{DEPENDS_SEPARATOR}\n", 2)
+        return nil unless depends && DEPENDS_LINES.match?(depends)
 
         packages = pairs(packages)
         provided = pairs(provided)
-        packages && provided ? new(packages.to_h, provided) : nil
+        return nil unless packages && provided
+
+        new(packages.to_h, provided, depends.split("\n").to_h { |line| line.split.then { |name, *names| [name, names.freeze] } })
       end
 
       # The [name, version] of each line, or nil when one is not that.
@@ -97,11 +123,24 @@ module Relspec
       private_class_method :pairs
 
       # +packages+: name => version; +provided+: [name, version] in the
-      # index's order.
-      def initialize(packages, provided)
+      # index's order; +gem_depends+: gem package name => the gem packages
+      # it depends on.
+      def initialize(packages, provided, gem_depends = {})
         @packages = packages.freeze
         @provided = provided.freeze
+        @gem_depends = gem_depends.freeze
         freeze
+      end
+
+      # The gem packages (names Naming::DISTRIBUTION_GEMS matches) gem
+      # package +name+ depends on, [] for none.
+      def gem_depends(name)
+        @gem_depends.fetch(name, [])
+      end
+
+      # Yields each gem package that depends on gem packages, with their names.
+      def each_gem_depends(&)
+        @gem_depends.each(&)
       end
 
       def names
@@ -122,7 +161,8 @@ module Relspec
 
       def dump
         body = "#{@packages.map { |name, version| "#{name} #{version}\n" }.join}#{SEPARATOR}\n" \
-               "#{@provided.map { |name, version| "#{name} #{version}\n" }.join}"
+               "#{@provided.map { |name, version| "#{name} #{version}\n" }.join}#{DEPENDS_SEPARATOR}\n" \
+               "#{@gem_depends.map { |name, names| "#{[name, *names].join(' ')}\n" }.join}"
         "#{Digest::SHA256.hexdigest(body)}\n#{body}"
       end
     end

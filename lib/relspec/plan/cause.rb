@@ -34,6 +34,12 @@ module Relspec
         new(:gem_version, "#{version} (#{ancestor} has #{theirs})", nil)
       end
 
+      # A gem the distribution has, which the release's own gems would
+      # shadow (+shadowing+: Catalog::ShadowedGems::Shadowing).
+      def self.shadowed_gem(shadowing)
+        new(:shadowed_gem, Printable.text(shadowing.to_s), nil)
+      end
+
       def self.depends_on(package, cause)
         new(:depends_on, package, cause)
       end
@@ -95,6 +101,7 @@ module Relspec
         when :blacklisted then "blacklisted by #{detail}"
         when :pinned then "pinned to #{detail}"
         when :gem_version then "gem version #{detail}"
+        when :shadowed_gem then "not taken from the distribution: #{detail}"
         when :depends_on then "depends on #{detail}, which is rebuilt because #{because}"
         when :nonexistent_osdeps, :other_os_osdeps then detail
         when :excluded then "excluded by autoproj: #{detail}"

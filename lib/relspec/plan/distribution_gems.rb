@@ -5,6 +5,7 @@ require_relative "distribution_packages"
 require_relative "../debian/naming"
 require_relative "../debian/package_version"
 require_relative "../debian/gem_version"
+require_relative "../catalog/shadowed_gems"
 
 module Relspec
   module Plan
@@ -42,6 +43,24 @@ module Relspec
 
         @notes << "#{target.codename} has #{name} #{versions.join(', ')}, the release packages gem #{package.name} #{package.version}"
         nil
+      end
+
+      # name => Catalog::ShadowedGems::Shadowing of the +system+ decisions
+      # (name => Decision) on +target+ that cannot be taken: the
+      # distribution's package depends on a gem of +packages+ (the selected
+      # Catalog::Packages) the release gives itself there, whose copy comes
+      # first at run time. One pass is enough: whatever depends on a package
+      # given up reaches the same gem through it. Each is noted.
+      def shadowed(system, packages, target)
+        packaged = packages.select { |package| package.build_type == "gem" && !system.key?(package.name) }
+                           .to_h { |package| [package.name, package.version] }
+        shadows = Catalog::ShadowedGems.new(depends: @distribution.gem_depends(target), packaged: packaged,
+                                            codename: target.codename)
+        found = system.keys.sort.filter_map do |name|
+          shadows.of(system.fetch(name).deb_name)&.then { |shadowing| [name, shadowing] }
+        end.to_h
+        found.each { |name, shadowing| @notes << "#{shadowing}: gem #{name} is packaged here" }
+        found
       end
 
       # Says on which targets no gem can come from the distribution, when

@@ -4,6 +4,7 @@ require_relative "../apt/opening"
 require_relative "archive_versions"
 require_relative "../apt/repository"
 require_relative "../apt/version"
+require_relative "../catalog/gem_depends"
 require_relative "../diagnostic"
 require_relative "../error"
 
@@ -22,6 +23,7 @@ module Relspec
         return new({}, []) if wanted.is_a?(Array) && wanted.empty?
 
         found = {}
+        depends = {}
         problems = []
         gaps = {}
         targets.each do |target|
@@ -29,7 +31,7 @@ module Relspec
           next unless archive
 
           repository = Apt::Opening.archive(archive, spec_dir, fetcher_options: fetcher_options, cache: cache)
-          found[target] = versions(repository, archive, target, wanted, cache)
+          found[target], depends[target] = versions(repository, archive, target, wanted, cache)
         rescue Apt::Repository::Missing => e
           # e.g. Ubuntu's arm64 lives on ports.ubuntu.com, not in the amd64 archive
           gaps[target] = e.message
@@ -39,7 +41,7 @@ module Relspec
         end
         raise InvalidInput, problems.uniq(&:message) unless problems.empty?
 
-        new(found, targets.reject { |target| found.key?(target) || gaps.key?(target) }, gaps)
+        new(found, targets.reject { |target| found.key?(target) || gaps.key?(target) }, gaps, depends)
       end
 
       # Every version of each wanted name over the archive's components,
@@ -51,20 +53,36 @@ module Relspec
       # requirement fits the provided one only.
       # Each component's index of the target's architecture, and its
       # binary-all where apt reads one (ruby-<gem> packages are
-      # Architecture: all).
+      # Architecture: all). Returns them, and every gem package's
+      # GemDepends (all of them, whatever is wanted: whether a gem is
+      # shadowed depends on the packages it reaches).
       def self.versions(repository, archive, target, wanted, cache)
         found = Hash.new { |hash, name| hash[name] = [] }
+        depends = {}
         archive.read_components.each do |component|
           repository.index_architectures(target.codename, target.arch, component: component).each do |arch|
             index = ArchiveVersions.of(repository, target, component, cache, arch: arch)
             names = wanted.is_a?(Regexp) ? index.names.grep(wanted) : wanted
             names.each { |name| found[name] << index.version(name) if index.version(name) }
             index.each_provided(wanted) { |name, version| found[name] << version }
+            add_depends(depends, index)
           end
         end
-        found.to_h { |name, versions| [name, newest_first(versions)] }
+        [found.to_h { |name, versions| [name, newest_first(versions)] }, depends.sort.to_h.freeze]
       end
       private_class_method :versions
+
+      # The newest of a name over the components and architectures read.
+      def self.add_depends(depends, index)
+        index.each_gem_depends do |name, names|
+          version = index.version(name)
+          known = depends[name]
+          next if known && Apt::Version.parse(known.version) >= Apt::Version.parse(version)
+
+          depends[name] = Catalog::GemDepends.new(name: name, version: version, depends: names)
+        end
+      end
+      private_class_method :add_depends
 
       def self.newest_first(versions)
         versions.uniq.sort_by { |version| Apt::Version.parse(version) }.reverse.freeze
@@ -75,12 +93,20 @@ module Relspec
 
       # +found+: Target => {name => [versions, newest first]}; +unknown+:
       # targets without an archive; +gaps+: Target => why its archive has
-      # nothing for it.
-      def initialize(found, unknown, gaps = {})
+      # nothing for it; +depends+: Target => {gem package name =>
+      # Catalog::GemDepends}.
+      def initialize(found, unknown, gaps = {}, depends = {})
         @found = found.freeze
         @unknown = unknown.freeze
         @gaps = gaps.freeze
+        @depends = depends.freeze
         freeze
+      end
+
+      # gem package name => Catalog::GemDepends of the target's archive
+      # (the gem packages that depend on any), {} when it was not read.
+      def gem_depends(target)
+        @depends.fetch(target, {})
       end
 
       # The newest version of +name+ on +target+, nil when it has none.

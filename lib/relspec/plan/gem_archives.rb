@@ -7,8 +7,8 @@ module Relspec
   module Plan
     # The targets' own ruby-* packages (DistributionPackages), read at most
     # once for planning's two uses of them: loading the catalog asks for all
-    # of them (#call) when it resolves a gem of the release against what the
-    # distributions have; the Planner then needs only the Debian names of
+    # of them (#call, and #depends) when it resolves a gem of the release
+    # against what the distributions have; the Planner then needs only the Debian names of
     # the release's gems (#distribution), and those are read only when the
     # whole set was not.
     class GemArchives
@@ -24,6 +24,13 @@ module Relspec
       def call
         @all ||= @read.call(Debian::Naming::DISTRIBUTION_GEMS)
         @targets.to_h { |target| [target.to_s, @all.index(target)] }
+      end
+
+      # {target name => {gem package => Catalog::GemDepends}} of every
+      # target (what depends on what among its gem packages), read with #call.
+      def depends
+        call
+        @targets.to_h { |target| [target.to_s, @all.gem_depends(target)] }
       end
 
       # The packages of +wanted+ (Debian names): those already read, else read now.

@@ -71,6 +71,11 @@ module Relspec
         providers = names.to_h { |name| [name, providers_of(@catalog.package(name), target)] }
         causes = names.to_h { |name| [name, direct_cause(@catalog.package(name), target, providers[name], blacklist)] }.compact
         system = names.to_h { |name| [name, @gems.decide(@catalog.package(name), target, causes[name])] }.compact
+        @gems.shadowed(system, names.map { |name| @catalog.package(name) }, target).each do |name, shadowing|
+          system.delete(name)
+          # built here, and why (one an ancestor has at its version is inherited)
+          causes[name] = Cause.shadowed_gem(shadowing) if causes.key?(name)
+        end
         causes.reject! { |name, _| system.key?(name) }
         rebuild_dependents(names - system.keys, causes)
         names.to_h { |name| [name, system[name] || decide(@catalog.package(name), target, providers[name], causes[name])] }

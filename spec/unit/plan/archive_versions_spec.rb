@@ -22,16 +22,37 @@ RSpec.describe Relspec::Plan::ArchiveVersions do
       Package: broken
       Version: 1.0
       Provides: ruby-oops (= 1.0, ((
+
+      Package: ruby-types
+      Version: 1.2.2-2
+      Depends: ruby-core (>= 0.4.4), libc6, ruby-concurrent | ruby-concurrent-compat, ruby:any
+
+      Package: ruby-plain
+      Version: 1.0-1
+      Depends: libc6
     INDEX
   end
 
   it "keeps each package's newest version and the versions provided with =" do
     versions = described_class.from_index(index)
-    expect(versions.names).to contain_exactly("ruby-thor", "libruby3.1", "broken")
+    expect(versions.names).to contain_exactly("ruby-thor", "libruby3.1", "broken", "ruby-types", "ruby-plain")
     expect(versions.version("ruby-thor")).to eq("1.2.1-1")
     expect(versions.version("ruby-date")).to be_nil
     expect(versions.enum_for(:each_provided, /\Aruby-/).to_a).to eq([%w[ruby-date 3.2.2], %w[ruby-json 2.6.1]])
     expect(versions.enum_for(:each_provided, %w[ruby-json]).to_a).to eq([%w[ruby-json 2.6.1]])
+  end
+
+  it "keeps the gem packages each gem package depends on, every alternative" do
+    versions = described_class.from_index(index)
+    expect(versions.gem_depends("ruby-types")).to eq(%w[ruby-concurrent ruby-concurrent-compat ruby-core])
+    expect(versions.gem_depends("ruby-plain")).to eq([])
+    expect(versions.gem_depends("libruby3.1")).to eq([])
+    expect(versions.enum_for(:each_gem_depends).to_a).to eq([["ruby-types", %w[ruby-concurrent ruby-concurrent-compat ruby-core]]])
+    loaded = described_class.load(versions.dump)
+    expect(loaded.gem_depends("ruby-types")).to eq(%w[ruby-concurrent ruby-concurrent-compat ruby-core])
+    # an entry an older relspec wrote, without them, is made again
+    old = versions.dump.split("\n", 2).last.sub(/#{described_class::DEPENDS_SEPARATOR}\n.*\z/m, "")
+    expect(described_class.load(signed(old))).to be_nil
   end
 
   it "reads back what it wrote, and nothing of an entry changed since" do
@@ -60,10 +81,13 @@ RSpec.describe Relspec::Plan::ArchiveVersions do
   end
 
   it "reads nothing of an entry with one bad line, even with the right checksum" do
-    good = "ruby-thor 1.2.1-1\n#{described_class::SEPARATOR}\nruby-date 3.2.2\n"
+    provided = "#{described_class::SEPARATOR}\nruby-date 3.2.2\n"
+    good = "ruby-thor 1.2.1-1\n#{provided}#{described_class::DEPENDS_SEPARATOR}\nruby-thor ruby-x\n"
     expect(described_class.load(signed(good)).version("ruby-thor")).to eq("1.2.1-1")
+    expect(described_class.load(signed(good)).gem_depends("ruby-thor")).to eq(["ruby-x"])
     ["zzz\n#{good}", "extra foo 1.13.10+dfsg-2+b1\n#{good}", "bad\tname 1.0\n#{good}", "x not-a-version\n#{good}",
-     "#{good}ruby-json\n", "ruby-thor 1.2.1-1\n", "x 1.0\xff\n#{good}"].each do |body|
+     "#{good}ruby-json\n", "ruby-thor 1.2.1-1\n", "x 1.0\xff\n#{good}", "ruby-thor 1.2.1-1\n#{provided}ruby-json\n",
+     "#{good}ruby-alone\n", "#{good}ruby-a\truby-b\n", "#{good}ruby-a  ruby-b\n"].each do |body|
       expect(described_class.load(signed(body))).to be_nil, body.inspect
     end
   end

@@ -17,8 +17,8 @@ RSpec.describe Relspec::Plan::DistributionGems do
     )
   end
 
-  def gems(found, requirements: {}, unknown: [], gaps: {})
-    distribution = Relspec::Plan::DistributionPackages.new(found, unknown, gaps)
+  def gems(found, requirements: {}, unknown: [], gaps: {}, depends: {})
+    distribution = Relspec::Plan::DistributionPackages.new(found, unknown, gaps, depends)
     described_class.new(distribution: distribution, requirements: requirements, notes: notes)
   end
 
@@ -46,5 +46,31 @@ RSpec.describe Relspec::Plan::DistributionGems do
                          "the bookworm archive has no ruby-y: gem y is packaged here",
                          "gems are packaged here on trixie: no distribution archive to take ruby-* packages from " \
                          "(distributions.<codename>.archive)"])
+  end
+
+  def depends(name, version, *names)
+    [name, Relspec::Catalog::GemDepends.new(name: name, version: version, depends: names)]
+  end
+
+  # bookworm's ruby-grape-logging depends on ruby-grape, the release builds grape 4.1.0 there;
+  # ruby-extra depends on ruby-grape-logging, given up too
+  it "gives up a distribution gem that depends on a gem the release gives itself there, and what depends on it" do
+    chooser = gems({ target => { "ruby-grape-logging" => %w[1.8.4-1], "ruby-extra" => %w[1.0-1], "ruby-thor" => %w[1.2.1-1] } },
+                   depends: { target => [depends("ruby-grape-logging", "1.8.4-1", "ruby-grape"),
+                                         depends("ruby-extra", "1.0-1", "ruby-grape-logging"),
+                                         depends("ruby-thor", "1.2.1-1", "ruby-other")].to_h })
+    packages = [gem_package("grape", "4.1.0"), gem_package("grape_logging", "1.8.4"), gem_package("extra", "1.0"),
+                gem_package("thor", "1.2.1")]
+    system = packages.drop(1).to_h { |package| [package.name, chooser.decide(package, target, nil)] }
+    expect(system.values.map(&:kind)).to eq(%i[system system system])
+    shadowed = chooser.shadowed(system, packages, target)
+    expect(shadowed.transform_values(&:to_s))
+      .to eq("grape_logging" => "ruby-grape-logging 1.8.4-1 (bookworm) depends on grape, which the release packages at 4.1.0",
+             "extra" => "ruby-extra 1.0-1 (bookworm) depends on ruby-grape-logging, which depends on grape, which the " \
+                        "release packages at 4.1.0")
+    expect(notes).to include("ruby-grape-logging 1.8.4-1 (bookworm) depends on grape, which the release packages at 4.1.0: " \
+                             "gem grape_logging is packaged here")
+    # nothing of the release built there: everything stays the distribution's
+    expect(chooser.shadowed(system, packages.drop(1), target)).to eq({})
   end
 end

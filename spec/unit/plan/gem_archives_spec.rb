@@ -11,7 +11,9 @@ RSpec.describe Relspec::Plan::GemArchives do
   let(:archives) do
     described_class.new([target]) do |wanted|
       reads << wanted
-      Relspec::Plan::DistributionPackages.new({ target => { "ruby-thor" => %w[1.2.1-1] } }, [])
+      depends = Relspec::Catalog::GemDepends.new(name: "ruby-thor", version: "1.2.1-1", depends: ["ruby-x"])
+      Relspec::Plan::DistributionPackages.new({ target => { "ruby-thor" => %w[1.2.1-1] } }, [], {},
+                                              { target => { "ruby-thor" => depends } })
     end
   end
 
@@ -21,6 +23,13 @@ RSpec.describe Relspec::Plan::GemArchives do
     distribution = archives.distribution(["ruby-thor"])
     expect(distribution.versions_of("ruby-thor", target)).to eq(%w[1.2.1-1])
     expect(reads).to eq([Relspec::Debian::Naming::DISTRIBUTION_GEMS])
+  end
+
+  it "hands the catalog what the gem packages depend on, from the same one reading" do
+    expect(archives.depends.transform_values { |found| found.transform_values(&:depends) })
+      .to eq("bookworm/amd64" => { "ruby-thor" => ["ruby-x"] })
+    archives.call
+    expect(reads.size).to eq(1)
   end
 
   it "reads only the wanted names when the catalog did not ask" do

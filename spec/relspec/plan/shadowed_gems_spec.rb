@@ -1,0 +1,119 @@
+# frozen_string_literal: true
+
+require "spec_helper"
+require "relspec/plan"
+
+# A distribution gem that depends on a gem the release packages itself is
+# packaged too (issue 44: on trixie, Debian's ruby-dry-types 1.2.2, made for
+# dry-core 0.7, ran beside the release's dry-core 1.2.0). The trixie core
+# release's gems in small, with their parts real: a real autoproj
+# workspace, real .gem files served with rubygems.org's compact index by a
+# WEBrick server on 127.0.0.1, and reprepro archives for bookworm and
+# trixie whose ruby-* packages carry Debian's Depends.
+#
+#   web 4.1.0 (grape)         needs conf >= 1.0, types >= 1.1, extra, plain;
+#                             bookworm has ruby-web 1.6.2-3, trixie none
+#   web_logging 3.0.1         needs web >= 2.0; bookworm has
+#     (grape_logging)         ruby-web-logging 1.8.4-1 (Depends: ruby-web), trixie none
+#   conf 1.4.0 (dry-configurable)  needs core ~> 1.0; both have ruby-conf 0.9.0-2
+#   core 1.2.0 (dry-core)     both have ruby-core 0.7.1-1
+#   types 1.2.2, 1.9.1        both have ruby-types 1.2.2-2 (Depends: ruby-core (>= 0.4.4))
+#     (dry-types)
+#   extra 1.0.0 needs mid; mid 1.0.0 needs core: both have ruby-extra 1.0-1
+#                             (Depends: ruby-mid) and ruby-mid 1.0-1 (Depends: ruby-core)
+#   plain: both have ruby-plain 2.0-1 (Depends: ruby-other), ruby-other 1.0-1; no .gem
+RSpec.describe "distribution gems that the release's own gems would shadow" do
+  before(:all) do
+    @dir = Dir.mktmpdir("relspec-shadowed-gems")
+    builder = WorkspaceBuilder.new(File.join(@dir, "ws"))
+    builder.package("tools/rest", type: :ruby, date: "2020-01-01T00:00:00Z", osdeps: %w[web web_logging])
+    builder.osdeps("web:\n  gem: web\nweb_logging:\n  gem: web_logging\n")
+    builder.create
+    gems = File.join(@dir, "server", "gems")
+    GemBuilder.build(gems, "web", "4.1.0", dependencies: { "conf" => ">= 1.0", "types" => ">= 1.1", "extra" => ">= 0",
+                                                           "plain" => ">= 1.0" })
+    GemBuilder.build(gems, "web_logging", "3.0.1", dependencies: { "web" => ">= 2.0" })
+    GemBuilder.build(gems, "conf", "1.4.0", dependencies: { "core" => "~> 1.0" })
+    GemBuilder.build(gems, "core", "1.2.0")
+    GemBuilder.build(gems, "types", "1.2.2", dependencies: { "core" => ">= 0.4" })
+    GemBuilder.build(gems, "types", "1.9.1", dependencies: { "core" => "~> 1.0" })
+    GemBuilder.build(gems, "extra", "1.0.0", dependencies: { "mid" => ">= 1.0" })
+    GemBuilder.build(gems, "mid", "1.0.0", dependencies: { "core" => ">= 0.5" })
+    GemBuilder.compact_index(File.join(@dir, "server"))
+    @server = HttpServer.new(File.join(@dir, "server"))
+    # an archive per codename: the same .deb names with other bytes would clash in one pool
+    archives = %w[bookworm trixie].to_h do |codename|
+      archive = AptRepositoryBuilder.new(File.join(@dir, codename), codenames: [codename], architectures: ["amd64"])
+      archive.add_many([{ name: "ruby-conf", version: "0.9.0-2" }, { name: "ruby-core", version: "0.7.1-1" },
+                        { name: "ruby-types", version: "1.2.2-2", depends: "ruby-core (>= 0.4.4)" },
+                        { name: "ruby-extra", version: "1.0-1", depends: "ruby-mid" },
+                        { name: "ruby-mid", version: "1.0-1", depends: "ruby-core | ruby-core-compat" },
+                        { name: "ruby-plain", version: "2.0-1", depends: "ruby-other (>= 1.0), libc6" },
+                        { name: "ruby-other", version: "1.0-1" }].map { |package| package.merge(arch: "amd64") },
+                       codename: codename)
+      [codename, archive]
+    end
+    archives.fetch("bookworm").add("ruby-web", "1.6.2-3", codename: "bookworm", arch: "amd64", depends: "ruby-conf, ruby-types")
+    archives.fetch("bookworm").add("ruby-web-logging", "1.8.4-1", codename: "bookworm", arch: "amd64",
+                                                                  depends: "ruby-web (>= 1.0)")
+    FileUtils.mkdir_p(File.join(@dir, "specs"))
+    File.write(File.join(@dir, "specs", "rest.yml"),
+               "release: rest\nworkspace: ../ws/workspace\ntargets: { bookworm: [amd64], trixie: [amd64] }\n" \
+               "maintainer: Demo <demo@example.org>\ngem_source: #{@server.url}\nselect: [tools/rest]\n" \
+               "distributions:\n  bookworm: { archive: { path: ../bookworm, trusted: true } }\n  " \
+               "trixie: { archive: { path: ../trixie, trusted: true } }\n")
+    @result = Relspec::Plan.run(File.join(@dir, "specs", "rest.yml"), cache_dir: nil)
+  end
+
+  after(:all) do
+    @server&.stop
+    FileUtils.rm_rf(@dir)
+  end
+
+  def decisions(codename)
+    @result.plan.targets.fetch(Relspec::Plan::Target.parse("#{codename}/amd64")).transform_values(&:to_h)
+  end
+
+  it "packages the distribution gem that depends on a packaged gem, at a version that fits every requirement" do
+    %w[bookworm trixie].each do |codename|
+      expect(decisions(codename)["types"])
+        .to include("decision" => "build", "deb" => "rock-rest-ruby-types", "version" => "1.9.1-1~#{codename}",
+                    "causes" => ["not taken from the distribution: ruby-types 1.2.2-2 (#{codename}) depends on core, " \
+                                 "which the release packages at 1.2.0"])
+      expect(decisions(codename)["core"]).to include("decision" => "build", "version" => "1.2.0-1~#{codename}")
+    end
+    # web's debian/ names the release's types, no longer Debian's ruby-types
+    expect(@result.catalog.package("web").dependencies).to include("types")
+    expect(@result.catalog.package("web").os_dependencies_for("trixie").gems).not_to include(a_string_starting_with("types"))
+    expect(@result.plan.notes).to include("ruby-types 1.2.2-2 (bookworm) depends on core, which the release packages at " \
+                                          "1.2.0: gem types is packaged here")
+  end
+
+  it "follows Debian's Depends through other gem packages, and packages what the walk reaches" do
+    expect(decisions("trixie")["extra"])
+      .to include("decision" => "build", "causes" => ["not taken from the distribution: ruby-extra 1.0-1 (trixie) depends " \
+                                                      "on ruby-mid, which depends on core, which the release packages at 1.2.0"])
+    expect(decisions("trixie")["mid"]).to include("decision" => "build", "version" => "1.0.0-1~trixie")
+    # a distribution gem that reaches no packaged gem stays the distribution's
+    expect(decisions("trixie").keys).not_to include("plain", "other")
+    expect(@result.catalog.package("web").os_dependencies_for("trixie").gems).to include("plain>= 1.0")
+  end
+
+  it "does not take a gem of the release from a target's distribution whose package depends on one built there" do
+    # bookworm's ruby-web 1.6.2 is too old for web_logging 3.0.1: web 4.1.0 is built there,
+    # and Debian's ruby-web-logging 1.8.4 would run with it
+    expect(decisions("bookworm")["web"]).to include("decision" => "build", "version" => "4.1.0-1~bookworm")
+    expect(decisions("bookworm")["web_logging"])
+      .to include("decision" => "build", "version" => "3.0.1-1~bookworm",
+                  "causes" => ["not taken from the distribution: ruby-web-logging 1.8.4-1 (bookworm) depends on web, " \
+                               "which the release packages at 4.1.0"])
+  end
+
+  it "says why with relspec why" do
+    run = relspec("why", "specs/rest.yml", "types", "--target", "trixie/amd64", chdir: @dir, env: { "XDG_CACHE_HOME" => @dir })
+    expect([run.exit_code, run.stderr]).to eq([0, ""])
+    expect(run.stdout).to eq("trixie/amd64: types is built here as rock-rest-ruby-types 1.9.1-1~trixie, because:\n  " \
+                             "not taken from the distribution: ruby-types 1.2.2-2 (trixie) depends on core, which the " \
+                             "release packages at 1.2.0\n")
+  end
+end
