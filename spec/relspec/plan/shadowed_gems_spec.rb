@@ -116,4 +116,21 @@ RSpec.describe "distribution gems that the release's own gems would shadow" do
                              "not taken from the distribution: ruby-types 1.2.2-2 (trixie) depends on core, which the " \
                              "release packages at 1.2.0\n")
   end
+
+  it "stops with one error saying why, when gem_source has no version of the gem it must package" do
+    folder = File.join(@dir, "no-types-gems")
+    FileUtils.mkdir_p(folder)
+    FileUtils.cp(Dir.glob(File.join(@dir, "server", "gems", "*.gem")).grep_v(%r{/types-}), folder)
+    File.write(File.join(@dir, "specs", "offline.yml"),
+               File.read(File.join(@dir, "specs", "rest.yml")).sub("release: rest", "release: offline")
+                   .sub(/^gem_source: .*$/, "gem_source: ../no-types-gems"))
+    run = relspec("plan", "specs/offline.yml", chdir: @dir, env: { "XDG_CACHE_HOME" => @dir })
+    expect(run.exit_code).to eq(1)
+    expect(run.stderr).to include("error[gem-unresolvable]: no version of gem types in ../no-types-gems fits what is asked: " \
+                                  "gem web 4.1.0 (>= 1.1); it has none (not taken from the distribution: ruby-types 1.2.2-2 " \
+                                  "(bookworm) depends on core, which the release packages at 1.2.0)")
+    expect(run.stderr.scan("error[").size).to eq(1)
+    expect(run.stderr).not_to include("Traceback", ".rb:")
+    expect(File.exist?(File.join(@dir, "releases", "offline", "lock.yml"))).to be(false)
+  end
 end
