@@ -92,6 +92,12 @@ module Relspec
         end
       end
 
+      # The gemspec's required_ruby_version (a Gem::Requirement, ">= 0" when
+      # it sets none).
+      def required_ruby
+        spec.required_ruby_version || Gem::Requirement.default
+      end
+
       # Runtime dependencies: [[name, requirement]].
       def runtime_dependencies
         spec.runtime_dependencies.map { |dependency| [dependency.name, dependency.requirement] }.sort_by(&:first)

@@ -3,6 +3,8 @@
 require_relative "gem_archive"
 require_relative "gem_versions"
 require_relative "shadowed_gems"
+require_relative "gem_candidates"
+require_relative "gem_problems"
 require_relative "../apt/version"
 require_relative "../debian/naming"
 require_relative "../debian/gem_version"
@@ -24,7 +26,9 @@ module Relspec
     # - otherwise packaged here, at the version the lock recorded while it
     #   still fits (as Bundler keeps a Gemfile.lock), else the highest one
     #   of gem_source that fits; its own runtime dependencies are resolved
-    #   the same way.
+    #   the same way. "Fits" includes the Ruby of every target (the gem's
+    #   required_ruby_version): one version serves every target, as one
+    #   commit of a workspace package does.
     #
     # `gems:` pins a version and is never second-guessed. Targets without
     # an archive are not checked (one note): their gem osdeps stay ruby-<gem>
@@ -53,18 +57,22 @@ module Relspec
       # (name, version) → GemArchive; +blacklisted+: name → bool;
       # +location+: where gem_source is set (for errors); +depends+: target
       # name => {gem package => GemDepends} of its archive (or a callable
-      # giving that, read with +archives+).
-      def initialize(catalog:, selected:, pinned:, archives:, locked:, versions:, fetch:, blacklisted:, location:, depends: {})
+      # giving that, read with +archives+); +rubies+: TargetRubies;
+      # +locate+: name → the Location of its `gems:` entry (or nil).
+      def initialize(catalog:, selected:, pinned:, archives:, locked:, versions:, fetch:, blacklisted:, location:, depends: {},
+                     rubies: TargetRubies::NONE, locate: ->(_) {})
         @catalog = catalog
         @selected = selected
         @pinned = pinned
         @archives = archives
         @depends = depends
-        @locked = locked
         @versions = versions
         @fetch = fetch
         @blacklisted = blacklisted
         @location = location
+        @rubies = rubies
+        @locate = locate
+        @candidates = GemCandidates.new(versions: versions, fetch: fetch, rubies: rubies, locked: locked)
       end
 
       # Raises InvalidInput when a gem has no version that fits.
@@ -137,9 +145,27 @@ module Relspec
         end
         @chosen[name] = version
         # a .gem that cannot be had is ReleaseGems' error, on its `gems:` entry
-        @fetch.call(name, version)
+        archive = @fetch.call(name, version)
+        check_pinned_ruby(archive)
+        archive
       rescue GemArchive::Problem
         nil
+      end
+
+      # A version of `gems:` is never second-guessed: one whose Ruby a
+      # target lacks is an error, unless that target's distribution has it
+      # (the planner takes ruby-<gem> there, and nothing is built).
+      def check_pinned_ruby(archive)
+        requirement = archive.required_ruby
+        refused = @rubies.refusing(requirement).reject do |codename, _|
+          provided_on?(archive.name, codename) { |found| found.to_s == archive.version }
+        end
+        return if refused.empty?
+
+        @problems << Diagnostic.error("gem-ruby", "gem #{archive.name} #{archive.version} of gems: needs Ruby #{requirement}, " \
+                                                  "which #{TargetRubies.describe(refused)} is not: it would install there " \
+                                                  "but not load", location: @locate.call(archive.name) || @location,
+                                                                  hint: "pin a version of #{archive.name} for that Ruby")
       end
 
       # The gem chosen (again) for what is asked of it now, nil when the
@@ -155,11 +181,9 @@ module Relspec
           @chosen[name] = :system
           return nil
         end
-        version = choose(name, fits)
-        return nil unless version
-
-        @chosen[name] = version
-        fetch(name, version)
+        archive = choose(name, fits)
+        @chosen[name] = archive.version if archive
+        archive
       end
 
       # The gems taken from the distributions that one of them has
@@ -197,62 +221,43 @@ module Relspec
 
       # Whether every target's archive was read and has ruby-<name> at a
       # version the block accepts.
-      def everywhere?(name)
+      def everywhere?(name, &block)
         return false if @archives.empty?
 
-        deb = Debian::Naming.distribution_gem(name)
-        @archives.values.all? do |found|
-          # any version the archive has (a real ruby-<gem> and libruby's Provides)
-          Array(found&.[](deb)).any? do |text|
-            version = Debian::GemVersion.from_debian(text)
-            version && yield(version)
-          end
+        @archives.values.all? { |found| has?(found, name, &block) }
+      end
+
+      # Whether every archive of +codename+'s targets was read and has
+      # ruby-<name> at a version the block accepts.
+      def provided_on?(name, codename, &block)
+        found = @archives.select { |target, _| target.split("/").first == codename }.values
+        !found.empty? && found.all? { |archive| has?(archive, name, &block) }
+      end
+
+      def has?(archive, name)
+        # any version the archive has (a real ruby-<gem> and libruby's Provides)
+        Array(archive&.[](Debian::Naming.distribution_gem(name))).any? do |text|
+          version = Debian::GemVersion.from_debian(text)
+          version && yield(version)
         end
       end
 
+      # The GemArchive of the version to package (GemCandidates), or nil
+      # with the problem.
       def choose(name, fits)
-        locked = @locked[name]
-        return locked if locked && Gem::Version.correct?(locked) && fits.call(Gem::Version.new(locked))
+        refused = []
+        found = @candidates.best(name, refused, &fits)
+        return found if found
 
-        listed = @versions.of(name)
-        found = listed.find(&fits)
-        return found.to_s if found
-
-        @problems << unresolvable(name, listed)
+        @problems << if refused.empty?
+                       GemProblems.unresolvable(name, @requests[name], @versions, shadowing: @shadowed[name], location: @location)
+                     else
+                       GemProblems.ruby_refused(name, @requests[name], @versions, refused, @rubies, location: @location)
+                     end
         nil
       rescue GemVersions::Problem => e
         @problems << Diagnostic.error("gem-source", e.message, location: @location, hint: "check gem_source")
         nil
-      end
-
-      def unresolvable(name, listed)
-        asked = @requests[name].map { |requirement, who| "#{who} (#{requirement})" }.join(", ")
-        there = if listed.empty?
-                  "it has none"
-                else
-                  "it has #{listed.first(5).join(', ')}#{', …' if listed.size > 5}"
-                end
-        shadowed = " (not taken from the distribution: #{@shadowed[name]})" if @shadowed.key?(name)
-        Diagnostic.error("gem-unresolvable", "no version of gem #{name} in #{@versions.where} fits what is asked: " \
-                                             "#{asked}; #{there}#{shadowed}",
-                         location: @location, hint: fetch_hint(name))
-      end
-
-      # Offline, a folder source is filled by hand: say how. Every gem
-      # missing at this depth is its own error of the same run; what they
-      # need in turn is known only from their .gem, hence `gem install`,
-      # which fetches the whole closure at once.
-      def fetch_hint(name)
-        return "add a fitting #{name} to gem_source, or pin one with gems:" unless @versions.folder?
-
-        requirement = @requests[name].map(&:first).reject(&:none?).flat_map(&:as_list).uniq.join(", ")
-        version = requirement.empty? ? "" : " -v '#{requirement}'"
-        "fetch it into #{@versions.where}: `gem fetch #{name}#{version}`; with the gems it needs: " \
-          "`gem install --install-dir <dir> --no-document #{name}#{version}`, then copy <dir>/cache/*.gem there"
-      end
-
-      def fetch(name, version)
-        @fetch.call(name, version)
       rescue GemArchive::Problem => e
         @problems << Diagnostic.error("gem-source", e.message, location: @location, hint: "check gem_source and the version")
         nil

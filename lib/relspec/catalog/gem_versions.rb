@@ -15,6 +15,9 @@ module Relspec
     #
     # Platform gems and prereleases are left out: the package is made from
     # the plain gem, and a prerelease is only taken when `gems:` names it.
+    # The compact index also says which Ruby each version needs ("ruby:>=
+    # 3.2"): a hint that spares downloading a .gem whose Ruby does not fit
+    # (the .gem's own gemspec decides).
     class GemVersions
       # Raised when the listing cannot be read; the message names its URL.
       class Problem < Relspec::Error; end
@@ -32,6 +35,7 @@ module Relspec
         @base_dir = base_dir
         @fetcher = Apt::Fetcher.new(@source, timeout: timeout)
         @listed = {}
+        @rubies = {}
       end
 
       def where
@@ -48,6 +52,14 @@ module Relspec
         @listed[name] ||= (@fetcher.remote? ? from_index(name) : from_folder(name)).uniq.sort.reverse.freeze
       end
 
+      # The Gem::Requirement on Ruby the compact index gives for +name+
+      # +version+ (listed by #of first), nil when it gives none (a folder
+      # has no index) or one RubyGems cannot read.
+      def required_ruby(name, version)
+        of(name)
+        @rubies.fetch(name, {})[Gem::Version.new(version)]
+      end
+
       private
 
       def from_folder(name)
@@ -62,7 +74,9 @@ module Relspec
         text = @fetcher.fetch("info/#{name}", max_bytes: MAX_BYTES)
         return [] unless text
 
-        index_versions(text.force_encoding(Encoding::UTF_8), "#{@source}/info/#{name}")
+        pairs = index_versions(text.force_encoding(Encoding::UTF_8), "#{@source}/info/#{name}")
+        @rubies[name] = pairs.select(&:last).to_h.freeze
+        pairs.map(&:first)
       rescue Apt::Fetcher::Failure => e
         raise Problem, "cannot list the versions of gem #{name}: #{e.message}"
       end
@@ -81,8 +95,16 @@ module Relspec
             raise Problem, "#{url}:#{number}: not a compact index line (\"VERSION DEPENDENCIES|checksum:SHA256\"): " \
                            "#{line.chomp[0, 60].inspect}"
           end
-          release(version)
+          (found = release(version)) && [found, ruby_of(rest)]
         end
+      end
+
+      # "…|checksum:…,ruby:>= 2.7&< 4,…": the requirement of the ruby: field.
+      def ruby_of(rest)
+        field = rest.split("|", 2).last.split(",").find { |item| item.start_with?("ruby:") }
+        field && Gem::Requirement.new(*field.delete_prefix("ruby:").split("&").map(&:strip))
+      rescue Gem::Requirement::BadRequirementError
+        nil
       end
 
       # A plain release version, or nil (platform, prerelease, not a version).

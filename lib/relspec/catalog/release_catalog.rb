@@ -135,7 +135,8 @@ module Relspec
                           depends: archives.method(:depends),
                           locked: locked, versions: GemVersions.new(effective.gem_source, base_dir: spec_dir, timeout: timeout),
                           fetch: fetch, blacklisted: ->(name) { blacklist.any? { |entry| entry.match?(name) } },
-                          location: effective.origin("gem_source")&.location || resolution.spec_file.location(["release"]))
+                          location: effective.origin("gem_source")&.location || resolution.spec_file.location(["release"]),
+                          rubies: TargetRubies.of(effective), locate: ->(name) { effective.entry_location("gems", name) })
                      .call
       end
 
