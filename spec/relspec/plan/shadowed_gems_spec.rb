@@ -22,6 +22,10 @@ require "relspec/plan"
 #   extra 1.0.0 needs mid; mid 1.0.0 needs core: both have ruby-extra 1.0-1
 #                             (Depends: ruby-mid) and ruby-mid 1.0-1 (Depends: ruby-core)
 #   plain: both have ruby-plain 2.0-1 (Depends: ruby-other), ruby-other 1.0-1; no .gem
+#
+# and newer versions that need Ruby >= 3.2 (their gemspec's
+# required_ruby_version, also in the compact index): core 1.3.0, and
+# types 2.0.0, which needs core ~> 1.3. bookworm's Ruby is 3.1, trixie's 3.3.
 RSpec.describe "distribution gems that the release's own gems would shadow" do
   before(:all) do
     @dir = Dir.mktmpdir("relspec-shadowed-gems")
@@ -35,6 +39,8 @@ RSpec.describe "distribution gems that the release's own gems would shadow" do
     GemBuilder.build(gems, "web_logging", "3.0.1", dependencies: { "web" => ">= 2.0" })
     GemBuilder.build(gems, "conf", "1.4.0", dependencies: { "core" => "~> 1.0" })
     GemBuilder.build(gems, "core", "1.2.0")
+    GemBuilder.build(gems, "core", "1.3.0", ruby: ">= 3.2")
+    GemBuilder.build(gems, "types", "2.0.0", dependencies: { "core" => "~> 1.3" }, ruby: ">= 3.2")
     GemBuilder.build(gems, "types", "1.2.2", dependencies: { "core" => ">= 0.4" })
     GemBuilder.build(gems, "types", "1.9.1", dependencies: { "core" => "~> 1.0" })
     GemBuilder.build(gems, "extra", "1.0.0", dependencies: { "mid" => ">= 1.0" })
@@ -132,5 +138,51 @@ RSpec.describe "distribution gems that the release's own gems would shadow" do
     expect(run.stderr.scan("error[").size).to eq(1)
     expect(run.stderr).not_to include("Traceback", ".rb:")
     expect(File.exist?(File.join(@dir, "releases", "offline", "lock.yml"))).to be(false)
+  end
+
+  def spec_like_rest(name, text)
+    File.write(File.join(@dir, "specs", "#{name}.yml"),
+               File.read(File.join(@dir, "specs", "rest.yml")).sub("release: rest", "release: #{name}").then { |yaml| text.call(yaml) })
+    File.join(@dir, "specs", "#{name}.yml")
+  end
+
+  # core 1.3.0 and types 2.0.0 would install on bookworm but not load there
+  it "packages the highest version every target's Ruby runs, and what it needs at versions that fit too" do
+    %w[bookworm trixie].each do |codename|
+      expect(decisions(codename)["types"]).to include("decision" => "build", "version" => "1.9.1-1~#{codename}")
+      expect(decisions(codename)["core"]).to include("decision" => "build", "version" => "1.2.0-1~#{codename}")
+    end
+    expect(@result.catalog.package("types").version).to eq("1.9.1")
+    # for trixie alone, the newest: one version serves every target of a spec
+    trixie = spec_like_rest("trixie-only", ->(yaml) { yaml.sub("targets: { bookworm: [amd64], trixie: [amd64] }", "targets: { trixie: [amd64] }") })
+    decided = Relspec::Plan.run(trixie, cache_dir: nil).plan.targets.fetch(Relspec::Plan::Target.parse("trixie/amd64"))
+    expect(decided.transform_values { |decision| decision.to_h["version"] }.slice("core", "types"))
+      .to eq("core" => "1.3.0-1~trixie", "types" => "2.0.0-1~trixie")
+  end
+
+  it "stops with one error naming the gem, the target and its Ruby, when no version runs there" do
+    folder = File.join(@dir, "new-core-gems")
+    FileUtils.mkdir_p(folder)
+    FileUtils.cp(Dir.glob(File.join(@dir, "server", "gems", "*.gem")).grep_v(%r{/core-1\.2\.0}), folder)
+    spec_like_rest("new-core", ->(yaml) { yaml.sub(/^gem_source: .*$/, "gem_source: ../new-core-gems") })
+    run = relspec("plan", "specs/new-core.yml", chdir: @dir, env: { "XDG_CACHE_HOME" => @dir })
+    expect(run.exit_code).to eq(1)
+    expect(run.stderr).to include("specs/new-core.yml:5:")
+    expect(run.stderr).to include("error[gem-ruby]: no version of gem core in ../new-core-gems that fits what is asked " \
+                                  "(gem conf 1.4.0 (~> 1.0)")
+    expect(run.stderr).to include("runs on Ruby 3.1 (bookworm): 1.3.0 needs Ruby >= 3.2")
+    expect(run.stderr.scan("error[").size).to eq(1)
+    expect(run.stderr).not_to include("Traceback", ".rb:")
+    expect(File.exist?(File.join(@dir, "releases", "new-core", "lock.yml"))).to be(false)
+  end
+
+  it "refuses a version of gems: that a target's Ruby cannot load, at its entry" do
+    spec_like_rest("pinned-core", ->(yaml) { "#{yaml}gems: { core: 1.3.0 }\n" })
+    run = relspec("plan", "specs/pinned-core.yml", chdir: @dir, env: { "XDG_CACHE_HOME" => @dir })
+    expect(run.exit_code).to eq(1)
+    expect(run.stderr).to include("specs/pinned-core.yml:10:15: error[gem-ruby]: gem core 1.3.0 of gems: needs Ruby >= 3.2, which Ruby 3.1 (bookworm) " \
+                                  "is not: it would install there but not load")
+    expect(run.stderr.scan("error[").size).to eq(1)
+    expect(run.stderr).not_to include("Traceback", ".rb:")
   end
 end
