@@ -21,4 +21,9 @@ RSpec.describe Relspec::Catalog::GemArchive, :tmpdir do
     expect(archive("cext", extension: true, files: { "ext/cext/cext.h" => "int x;\n" }).ships_headers?).to be(false)
     expect(archive("pure", files: { "lib/pure/x.h" => "int x;\n" }).ships_headers?).to be(false)
   end
+
+  it "gives the gemspec's required_ruby_version, >= 0 when it sets none" do
+    expect(archive("modern", ruby: ">= 3.2").required_ruby).to eq(Gem::Requirement.new(">= 3.2"))
+    expect(archive("any").required_ruby).to eq(Gem::Requirement.default)
+  end
 end

@@ -15,6 +15,10 @@ RSpec.describe Relspec::Catalog::GemVersions do
       response.body = "---\n1.0.0 bar:>= 1.0|checksum:aa\n1.10.0 |checksum:bb\n1.10.0-java |checksum:cc\n" \
                       "2.0.0.rc1 |checksum:dd\n1.9.1 |checksum:ee,ruby:>= 2.5\n"
     end
+    @server.mount_proc("/info/rubies") do |_, response|
+      response.body = "---\n1.0.0 |checksum:aa,ruby:>= 2.7&< 4,created_at:2020-01-01T00:00:00Z\n2.0.0 |checksum:bb,ruby:>= banana\n" \
+                      "3.0.0 a:>= 1,b:< 2|checksum:cc\n"
+    end
     @server.mount_proc("/info/endless") { |_, response| StreamedBody.attach(response, "9.9.9 |checksum:ff\n" * 4096, 0) }
     @server.mount_proc("/info/html") { |_, response| response.body = "<html><body>Proxy login</body></html>\n" }
     @server.mount_proc("/info/cut") { |_, response| response.body = "---\n1.0.0 |checksum:aa\n1.1.0 |chec" }
@@ -31,6 +35,17 @@ RSpec.describe Relspec::Catalog::GemVersions do
 
   it "reads the compact index: releases only, highest first" do
     expect(described_class.new(@url, base_dir: "/").of("foo").map(&:to_s)).to eq(%w[1.10.0 1.9.1 1.0.0])
+  end
+
+  # dry-core 1.2.0's line says "ruby:>= 3.2": a hint that spares its download on a Ruby 3.1 target
+  it "gives the Ruby the compact index says a version needs, none where it says none or what it says is no requirement" do
+    versions = described_class.new(@url, base_dir: "/")
+    expect(versions.required_ruby("foo", "1.9.1")).to eq(Gem::Requirement.new(">= 2.5"))
+    expect(versions.required_ruby("foo", "1.10.0")).to be_nil
+    expect(versions.required_ruby("rubies", "1.0.0")).to eq(Gem::Requirement.new(">= 2.7", "< 4"))
+    expect(versions.required_ruby("rubies", "2.0.0")).to be_nil
+    expect(versions.required_ruby("rubies", "3.0.0")).to be_nil
+    expect(versions.required_ruby("nothing", "1.0.0")).to be_nil
   end
 
   it "has no versions of a gem the server does not know" do

@@ -1,7 +1,7 @@
 # frozen_string_literal: true
 
 require_relative "../unit_helper"
-require "rubygems/package"
+require_relative "../../support/in_process_gem"
 require "relspec/catalog"
 require "relspec/catalog/package"
 require "relspec/catalog/release_catalog"
@@ -22,20 +22,8 @@ RSpec.describe Relspec::Catalog::ReleaseCatalog do
     end
   end
 
-  def write_gem(name, version, dependencies = {})
-    spec = Gem::Specification.new do |gem|
-      gem.name = name
-      gem.version = version
-      gem.summary = "#{name} stand-in"
-      gem.authors = ["Demo"]
-      gem.files = []
-      gem.date = Time.utc(2020, 2, 2)
-      dependencies.each { |other, requirement| gem.add_runtime_dependency(other, requirement) }
-    end
-    FileUtils.mkdir_p(File.join(@dir, "gems"))
-    package = Gem::Package.new(File.join(@dir, "gems", "#{name}-#{version}.gem"))
-    package.spec = spec
-    Gem::DefaultUserInteraction.use_ui(Gem::SilentUI.new) { package.build }
+  def write_gem(name, version, dependencies = {}, ruby: nil)
+    InProcessGem.write(File.join(@dir, "gems"), name, version, dependencies: dependencies, ruby: ruby)
   end
 
   def spec_path
@@ -56,7 +44,7 @@ RSpec.describe Relspec::Catalog::ReleaseCatalog do
   # trixie's case: ruby-types 1.2.2 depends on ruby-core, which is too old, so the release packages core
   def load(depends)
     write_gem("core", "1.2.0")
-    write_gem("types", "1.9.1", "core" => "~> 1.0")
+    write_gem("types", "1.9.1", { "core" => "~> 1.0" })
     archives = Struct.new(:depends) do
       def call = { "bookworm/amd64" => { "ruby-types" => %w[1.2.2-2], "ruby-core" => %w[0.7.1-1] } }
     end.new({ "bookworm/amd64" => depends })
@@ -76,5 +64,12 @@ RSpec.describe Relspec::Catalog::ReleaseCatalog do
       .to eq(["ruby-types 1.2.2-2 (bookworm) depends on core, which the release packages at 1.2.0: gem types is packaged here"])
 
     expect(load({}).catalog.package?("types")).to be(false)
+  end
+
+  # bookworm's Ruby is 3.1: core 1.3.0 would install there but not load
+  it "hands the targets' Ruby to gem resolution: what needs a newer one is not packaged" do
+    write_gem("core", "1.3.0", ruby: ">= 3.2")
+    types = Relspec::Catalog::GemDepends.new(name: "ruby-types", version: "1.2.2-2", depends: ["ruby-core"])
+    expect(load("ruby-types" => types).catalog.package("core").version).to eq("1.2.0")
   end
 end
