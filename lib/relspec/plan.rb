@@ -15,6 +15,7 @@ require_relative "plan/lock_parser"
 require_relative "plan/lock_generator"
 require_relative "plan/settlement"
 require_relative "plan/gem_check"
+require_relative "plan/gem_ruby_check"
 require_relative "plan/gem_archives"
 require_relative "debian/overlay"
 require_relative "plan/facts"
@@ -88,7 +89,9 @@ module Relspec
       planner = Planner.new(release_catalog: facts.release_catalog, effective: effective, spec_file: resolution.spec_file,
                             ancestors: facts.ancestors, inventory: facts.inventory, distribution: facts.distribution,
                             uncommitted: facts.uncommitted || {})
-      plan, work = settle(planner.plan, facts)
+      decided = planner.plan
+      GemRubyCheck.call(decided, facts.release_catalog, resolution)
+      plan, work = settle(decided, facts)
       history = facts.previous&.history || History.empty
       Result.new(resolution: resolution, release_catalog: facts.release_catalog, plan: plan,
                  lock: Lock.from_plan(plan, Lock.spec_digest(effective), history), lock_path: facts.lock_path, work: work,

@@ -20,16 +20,17 @@ module Relspec
       end
 
       # The GemArchive of the best version of +name+ the block accepts
-      # (a Gem::Version) and every target's Ruby runs, or nil; +refused+
-      # gets [version, Gem::Requirement on Ruby] of each one passed over for
-      # its Ruby. Raises GemArchive::Problem and GemVersions::Problem.
-      def best(name, refused, &fits)
+      # (a Gem::Version) and every Ruby of +rubies+ (default: every
+      # target's) runs, or nil; +refused+ gets [version, Gem::Requirement on
+      # Ruby] of each one passed over for its Ruby. Raises
+      # GemArchive::Problem and GemVersions::Problem.
+      def best(name, refused, rubies = @rubies, &fits)
         candidates(name, fits).each do |version|
           hinted = @versions.required_ruby(name, version)
-          next refused << [version, hinted] unless @rubies.refusing(hinted).empty?
+          next refused << [version, hinted] unless rubies.refusing(hinted).empty?
 
           archive = @fetch.call(name, version)
-          return archive if @rubies.refusing(archive.required_ruby).empty?
+          return archive if rubies.refusing(archive.required_ruby).empty?
 
           refused << [version, archive.required_ruby]
         end

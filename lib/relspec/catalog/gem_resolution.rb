@@ -87,6 +87,7 @@ module Relspec
         @chosen = {}
         @needs = {}
         @shadowed = {}
+        @spared = {}
         @problems = []
         walk((requests.keys + @pinned.keys).uniq.sort)
         unshadow
@@ -246,7 +247,8 @@ module Relspec
       # with the problem.
       def choose(name, fits)
         refused = []
-        found = @candidates.best(name, refused, &fits)
+        @spared.delete(name)
+        found = @candidates.best(name, refused, &fits) || spare(name, fits)
         return found if found
 
         @problems << if refused.empty?
@@ -261,6 +263,19 @@ module Relspec
       rescue GemArchive::Problem => e
         @problems << Diagnostic.error("gem-source", e.message, location: @location, hint: "check gem_source and the version")
         nil
+      end
+
+      # No version that fits runs on every target's Ruby: a target whose
+      # distribution has ruby-<name> at a version that fits takes that (the
+      # planner does; Plan::GemRubyCheck stops a plan that would build it
+      # there after all), and the version is chosen for the others' Ruby.
+      def spare(name, fits)
+        codenames = @rubies.rubies.keys.select { |codename| provided_on?(name, codename, &fits) }
+        return nil if codenames.empty?
+
+        found = @candidates.best(name, [], @rubies.without(codenames), &fits)
+        @spared[name] = codenames if found
+        found
       end
 
       # A cycle among the packaged gems, as one error: no order builds them.
@@ -288,7 +303,11 @@ module Relspec
       end
 
       def notes
-        shadowed = @shadowed.sort.map { |name, shadowing| "#{shadowing}: gem #{name} is packaged here" }
+        shadowed = @shadowed.sort.map { |name, shadowing| "#{shadowing}: gem #{name} is packaged here" } +
+                   @spared.sort.map do |name, codenames|
+                     "no version of gem #{name} that fits runs on the Ruby of #{codenames.join(', ')}: taken from the " \
+                       "distribution there, packaged at #{@chosen[name]} for the other targets"
+                   end
         unchecked = @archives.select { |_, found| found.nil? }.keys.sort
         asked = @requests.keys - @pinned.keys - @chosen.reject { |_, version| version == :system }.keys
         return shadowed if unchecked.empty? || asked.empty?

@@ -36,6 +36,11 @@ module Relspec
         @rubies.reject { |_, ruby| requirement.satisfied_by?(Gem::Version.new("#{ruby}.0")) }.to_a
       end
 
+      # These Rubies but those of +codenames+.
+      def without(codenames)
+        TargetRubies.new(@rubies.except(*codenames))
+      end
+
       # "Ruby 3.1 (bookworm)" for what #refusing returns.
       def self.describe(refused)
         refused.map { |codename, ruby| "Ruby #{ruby} (#{codename})" }.join(", ")

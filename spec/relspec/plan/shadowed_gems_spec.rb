@@ -26,12 +26,15 @@ require "relspec/plan"
 # and newer versions that need Ruby >= 3.2 (their gemspec's
 # required_ruby_version, also in the compact index): core 1.3.0, and
 # types 2.0.0, which needs core ~> 1.3. bookworm's Ruby is 3.1, trixie's 3.3.
+# late 2.0.0, the only version of late, needs Ruby >= 3.2: bookworm has
+# ruby-late 1.0-1 (and in a second bookworm archive, bookworm-late, it
+# depends on ruby-core), trixie none.
 RSpec.describe "distribution gems that the release's own gems would shadow" do
   before(:all) do
     @dir = Dir.mktmpdir("relspec-shadowed-gems")
     builder = WorkspaceBuilder.new(File.join(@dir, "ws"))
-    builder.package("tools/rest", type: :ruby, date: "2020-01-01T00:00:00Z", osdeps: %w[web web_logging])
-    builder.osdeps("web:\n  gem: web\nweb_logging:\n  gem: web_logging\n")
+    builder.package("tools/rest", type: :ruby, date: "2020-01-01T00:00:00Z", osdeps: %w[web web_logging late])
+    builder.osdeps("web:\n  gem: web\nweb_logging:\n  gem: web_logging\nlate:\n  gem: late\n")
     builder.create
     gems = File.join(@dir, "server", "gems")
     GemBuilder.build(gems, "web", "4.1.0", dependencies: { "conf" => ">= 1.0", "types" => ">= 1.1", "extra" => ">= 0",
@@ -45,11 +48,12 @@ RSpec.describe "distribution gems that the release's own gems would shadow" do
     GemBuilder.build(gems, "types", "1.9.1", dependencies: { "core" => "~> 1.0" })
     GemBuilder.build(gems, "extra", "1.0.0", dependencies: { "mid" => ">= 1.0" })
     GemBuilder.build(gems, "mid", "1.0.0", dependencies: { "core" => ">= 0.5" })
+    GemBuilder.build(gems, "late", "2.0.0", ruby: ">= 3.2")
     GemBuilder.compact_index(File.join(@dir, "server"))
     @server = HttpServer.new(File.join(@dir, "server"))
     # an archive per codename: the same .deb names with other bytes would clash in one pool
-    archives = %w[bookworm trixie].to_h do |codename|
-      archive = AptRepositoryBuilder.new(File.join(@dir, codename), codenames: [codename], architectures: ["amd64"])
+    archives = { "bookworm" => "bookworm", "trixie" => "trixie", "bookworm-late" => "bookworm" }.to_h do |folder, codename|
+      archive = AptRepositoryBuilder.new(File.join(@dir, folder), codenames: [codename], architectures: ["amd64"])
       archive.add_many([{ name: "ruby-conf", version: "0.9.0-2" }, { name: "ruby-core", version: "0.7.1-1" },
                         { name: "ruby-types", version: "1.2.2-2", depends: "ruby-core (>= 0.4.4)" },
                         { name: "ruby-extra", version: "1.0-1", depends: "ruby-mid" },
@@ -57,11 +61,14 @@ RSpec.describe "distribution gems that the release's own gems would shadow" do
                         { name: "ruby-plain", version: "2.0-1", depends: "ruby-other (>= 1.0), libc6" },
                         { name: "ruby-other", version: "1.0-1" }].map { |package| package.merge(arch: "amd64") },
                        codename: codename)
-      [codename, archive]
+      [folder, archive]
     end
-    archives.fetch("bookworm").add("ruby-web", "1.6.2-3", codename: "bookworm", arch: "amd64", depends: "ruby-conf, ruby-types")
-    archives.fetch("bookworm").add("ruby-web-logging", "1.8.4-1", codename: "bookworm", arch: "amd64",
-                                                                  depends: "ruby-web (>= 1.0)")
+    archives.values_at("bookworm", "bookworm-late").each do |archive|
+      archive.add("ruby-web", "1.6.2-3", codename: "bookworm", arch: "amd64", depends: "ruby-conf, ruby-types")
+      archive.add("ruby-web-logging", "1.8.4-1", codename: "bookworm", arch: "amd64", depends: "ruby-web (>= 1.0)")
+    end
+    archives.fetch("bookworm").add("ruby-late", "1.0-1", codename: "bookworm", arch: "amd64")
+    archives.fetch("bookworm-late").add("ruby-late", "1.0-1", codename: "bookworm", arch: "amd64", depends: "ruby-core")
     FileUtils.mkdir_p(File.join(@dir, "specs"))
     File.write(File.join(@dir, "specs", "rest.yml"),
                "release: rest\nworkspace: ../ws/workspace\ntargets: { bookworm: [amd64], trixie: [amd64] }\n" \
@@ -158,6 +165,26 @@ RSpec.describe "distribution gems that the release's own gems would shadow" do
     decided = Relspec::Plan.run(trixie, cache_dir: nil).plan.targets.fetch(Relspec::Plan::Target.parse("trixie/amd64"))
     expect(decided.transform_values { |decision| decision.to_h["version"] }.slice("core", "types"))
       .to eq("core" => "1.3.0-1~trixie", "types" => "2.0.0-1~trixie")
+  end
+
+  it "takes the distribution's package on a target whose Ruby runs no version of the gem, and packages it for the others" do
+    expect(decisions("bookworm")["late"]).to include("decision" => "system", "deb" => "ruby-late", "version" => "1.0-1")
+    expect(decisions("trixie")["late"]).to include("decision" => "build", "version" => "2.0.0-1~trixie")
+    expect(@result.plan.notes).to include("no version of gem late that fits runs on the Ruby of bookworm: taken from the " \
+                                          "distribution there, packaged at 2.0.0 for the other targets")
+  end
+
+  it "stops when the distribution's package cannot be taken there after all (it depends on a gem the release builds)" do
+    spec_like_rest("late-shadowed", ->(yaml) { yaml.sub("path: ../bookworm,", "path: ../bookworm-late,") })
+    run = relspec("plan", "specs/late-shadowed.yml", chdir: @dir, env: { "XDG_CACHE_HOME" => @dir })
+    expect(run.exit_code).to eq(1)
+    expect(run.stderr).to include("specs/late-shadowed.yml:5:1: error[gem-ruby]: gem late 2.0.0 needs Ruby >= 3.2, and would " \
+                                  "be built for bookworm/amd64 (Ruby 3.1) (not taken from the distribution: ruby-late 1.0-1 " \
+                                  "(bookworm) depends on core, which the release packages at 1.2.0): it would install there " \
+                                  "but not load")
+    expect(run.stderr.scan("error[").size).to eq(1)
+    expect(run.stderr).not_to include("Traceback", ".rb:")
+    expect(File.exist?(File.join(@dir, "releases", "late-shadowed", "lock.yml"))).to be(false)
   end
 
   it "stops with one error naming the gem, the target and its Ruby, when no version runs there" do

@@ -71,9 +71,10 @@ RSpec.describe Relspec::Catalog::GemResolution do
       Relspec::Catalog.new(packages: { "app" => package }, layout: ["app"], codenames: ["bookworm"])
     end
 
-    def resolve_with(depends, archive, target_rubies: Relspec::Catalog::TargetRubies::NONE, locked: {}, pinned: {})
+    def resolve_with(depends, archive, target_rubies: Relspec::Catalog::TargetRubies::NONE, locked: {}, pinned: {}, others: {})
       described_class.new(catalog: app_needing("dry-types>= 1.1", "dry-core>= 1.0"), selected: { "bookworm" => ["app"] },
-                          pinned: pinned, archives: -> { { "bookworm/amd64" => archive } }, locked: locked, versions: versions,
+                          pinned: pinned, archives: -> { { "bookworm/amd64" => archive }.merge(others) }, locked: locked,
+                          versions: versions,
                           fetch: fetch, blacklisted: ->(_) { false }, location: nil,
                           depends: -> { { "bookworm/amd64" => depends } }, rubies: target_rubies,
                           locate: ->(_name) { Relspec::Location.new(file: "specs/app.yml", line: 4) }).call
@@ -142,6 +143,17 @@ RSpec.describe Relspec::Catalog::GemResolution do
             .to start_with("no version of gem dry-core in gem_source that fits what is asked (app's osdep dry-core>= 1.0 (>= 1.0)")
             .and end_with(") runs on Ruby 3.1 (bookworm): 1.2.0 needs Ruby >= 3.2, 1.1.0 needs Ruby >= 3.2, 1.0.0 needs Ruby >= 3.2")
         end
+      end
+
+      it "takes the distribution's package on a target whose Ruby runs no version, and packages one for the others" do
+        rubies.merge!("dry-core 1.1.0" => ">= 3.2", "dry-core 1.0.0" => ">= 3.2")
+        result = resolve_with({}, { "ruby-dry-core" => %w[1.0.1-1] }, target_rubies: bookworm, others: { "trixie/amd64" => {} })
+        expect(result.automatic).to eq("dry-core" => "1.2.0", "dry-types" => "1.8.3")
+        expect(result.notes).to eq(["no version of gem dry-core that fits runs on the Ruby of bookworm: taken from the " \
+                                    "distribution there, packaged at 1.2.0 for the other targets"])
+        # bookworm's 0.7.1 does not fit what is asked: nothing to fall back on
+        expect { resolve_with({}, { "ruby-dry-core" => %w[0.7.1-1] }, target_rubies: bookworm, others: { "trixie/amd64" => {} }) }
+          .to raise_error(Relspec::InvalidInput, /gem-ruby/)
       end
 
       it "refuses a version of gems: whose Ruby a target lacks, at its entry, unless that distribution has it" do
