@@ -270,6 +270,9 @@ module Relspec
       # planner does; Plan::GemRubyCheck stops a plan that would build it
       # there after all), and the version is chosen for the others' Ruby.
       def spare(name, fits)
+        # a blacklisted gem is never taken from a distribution
+        return nil if @blacklisted.call(name)
+
         codenames = @rubies.rubies.keys.select { |codename| provided_on?(name, codename, &fits) }
         return nil if codenames.empty?
 

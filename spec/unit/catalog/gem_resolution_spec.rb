@@ -71,11 +71,12 @@ RSpec.describe Relspec::Catalog::GemResolution do
       Relspec::Catalog.new(packages: { "app" => package }, layout: ["app"], codenames: ["bookworm"])
     end
 
-    def resolve_with(depends, archive, target_rubies: Relspec::Catalog::TargetRubies::NONE, locked: {}, pinned: {}, others: {})
+    def resolve_with(depends, archive, target_rubies: Relspec::Catalog::TargetRubies::NONE, locked: {}, pinned: {}, others: {},
+                     blacklisted: [])
       described_class.new(catalog: app_needing("dry-types>= 1.1", "dry-core>= 1.0"), selected: { "bookworm" => ["app"] },
                           pinned: pinned, archives: -> { { "bookworm/amd64" => archive }.merge(others) }, locked: locked,
                           versions: versions,
-                          fetch: fetch, blacklisted: ->(_) { false }, location: nil,
+                          fetch: fetch, blacklisted: ->(name) { blacklisted.include?(name) }, location: nil,
                           depends: -> { { "bookworm/amd64" => depends } }, rubies: target_rubies,
                           locate: ->(_name) { Relspec::Location.new(file: "specs/app.yml", line: 4) }).call
     end
@@ -151,7 +152,11 @@ RSpec.describe Relspec::Catalog::GemResolution do
         expect(result.automatic).to eq("dry-core" => "1.2.0", "dry-types" => "1.8.3")
         expect(result.notes).to eq(["no version of gem dry-core that fits runs on the Ruby of bookworm: taken from the " \
                                     "distribution there, packaged at 1.2.0 for the other targets"])
-        # bookworm's 0.7.1 does not fit what is asked: nothing to fall back on
+        # a blacklisted gem is never taken from the distribution, nor is bookworm's 0.7.1, which does not fit
+        expect do
+          resolve_with({}, { "ruby-dry-core" => %w[1.0.1-1] }, target_rubies: bookworm, others: { "trixie/amd64" => {} },
+                                                               blacklisted: ["dry-core"])
+        end.to raise_error(Relspec::InvalidInput, /gem-ruby/)
         expect { resolve_with({}, { "ruby-dry-core" => %w[0.7.1-1] }, target_rubies: bookworm, others: { "trixie/amd64" => {} }) }
           .to raise_error(Relspec::InvalidInput, /gem-ruby/)
       end
