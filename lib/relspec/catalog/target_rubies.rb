@@ -4,15 +4,15 @@ require_relative "../frozen"
 
 module Relspec
   class Catalog
-    # The Ruby each target codename runs (its distribution's, "3.1" on
+    # The Ruby each target codename runs (its distribution's, 3.1.2 on
     # bookworm), against which a gem's required_ruby_version is checked
     # before the release packages it: a gem that needs a newer Ruby installs
     # but does not load. Codenames whose Ruby is not known are not checked.
     class TargetRubies
-      # codename => "major.minor"
+      # codename => its Ruby's version ("3.1.2", or "3.1" where only that is known)
       attr_reader :rubies
 
-      # +rubies+: codename => "major.minor" or nil (unknown).
+      # +rubies+: codename => version text, or nil (unknown).
       def initialize(rubies)
         @rubies = Frozen.deep(rubies.compact.sort.to_h)
         freeze
@@ -23,17 +23,23 @@ module Relspec
       # The targets of +effective+ (an effective spec) with their distributions' Ruby.
       def self.of(effective)
         distributions = effective.distributions
-        new(effective.targets.keys.to_h { |codename| [codename, distributions[codename]&.ruby] })
+        new(effective.targets.keys.to_h do |codename|
+          distribution = distributions[codename]
+          [codename, distribution&.ruby_release || distribution&.ruby]
+        end)
       end
 
       # [[codename, ruby]] of the targets whose Ruby +requirement+ (a
-      # Gem::Requirement, nil for none) excludes. A distribution names its
-      # Ruby by major.minor: it is taken as its first release (3.1.0), so
-      # that nothing is packaged for a Ruby it may not load on.
+      # Gem::Requirement, nil for none) excludes. A Ruby known only by
+      # major.minor (a distribution a spec defines) is taken as its first
+      # release (3.1.0), so that nothing is packaged for a Ruby it may not
+      # load on.
       def refusing(requirement)
         return [] unless requirement
 
-        @rubies.reject { |_, ruby| requirement.satisfied_by?(Gem::Version.new("#{ruby}.0")) }.to_a
+        @rubies.reject do |_, ruby|
+          requirement.satisfied_by?(Gem::Version.new(ruby.count(".") == 1 ? "#{ruby}.0" : ruby))
+        end.to_a
       end
 
       # These Rubies but those of +codenames+.

@@ -14,11 +14,15 @@ module Relspec
     # debhelper compatibility level generated debian/ folders use there (the
     # highest its debhelper supports; docs/compile.md lists the sources).
     # +ruby+: the "major.minor" of the distribution's Ruby (autoproj loads
-    # `.osdeps-ruby<major><minor>` files for it), or nil when unknown.
-    Distribution = Struct.new(:codename, :type, :labels, :archive, :debhelper_compat, :ruby, keyword_init: true) do
-      def self.define(codename, type, labels, archive: nil, debhelper_compat: DEFAULT_DEBHELPER_COMPAT, ruby: nil)
+    # `.osdeps-ruby<major><minor>` files for it), or nil when unknown;
+    # +ruby_release+: its upstream version ("3.1.2", what the gems relspec
+    # packages must run on: grape 4.1 needs Ruby >= 3.3.1), or nil.
+    Distribution = Struct.new(:codename, :type, :labels, :archive, :debhelper_compat, :ruby, :ruby_release,
+                              keyword_init: true) do
+      def self.define(codename, type, labels, archive: nil, debhelper_compat: DEFAULT_DEBHELPER_COMPAT, ruby: nil,
+                      ruby_release: nil)
         new(codename: codename, type: type, labels: labels.map(&:to_s).freeze, archive: Archive.from(archive),
-            debhelper_compat: debhelper_compat, ruby: ruby).freeze
+            debhelper_compat: debhelper_compat, ruby: ruby, ruby_release: ruby_release).freeze
       end
 
       # The distribution's Ruby as a path (/usr/bin/ruby3.3, from the
@@ -74,22 +78,26 @@ module Relspec
       # trixie 13.24.2 (compat 14 is still experimental there). Their Ruby
       # (the ruby package's default): xenial 2.3, stretch 2.3, bionic 2.5,
       # buster 2.5, focal 2.7, bullseye 2.7, jammy 3.0, bookworm 3.1,
-      # noble 3.2, trixie 3.3. Labels: what autoproj reads of /etc/os-release
+      # noble 3.2, trixie 3.3; the upstream version of that Ruby in each
+      # archive (its rubyX.Y package; a stable release keeps it): xenial
+      # 2.3.1, stretch 2.3.3, bionic 2.5.1, buster 2.5.5, focal 2.7.0,
+      # bullseye 2.7.4, jammy 3.0.2, bookworm 3.1.2, noble 3.2.3, trixie
+      # 3.3.8. Labels: what autoproj reads of /etc/os-release
       # (VERSION_ID, then the words of VERSION: "13 (trixie)"), plus
       # "default". Debian testing (forky) is not built in: its os-release has
       # no version and its /etc/debian_version says "forky/sid", so autoproj
       # names it "unstable, sid", and its Ruby and debhelper still move.
       BUILTIN = [
-        Distribution.define("xenial", "ubuntu", %w[16.04 xenial xerus default], debhelper_compat: 9, ruby: "2.3"),
-        Distribution.define("bionic", "ubuntu", %w[18.04 bionic beaver default], debhelper_compat: 11, ruby: "2.5"),
-        Distribution.define("focal", "ubuntu", %w[20.04 focal fossa default], debhelper_compat: 12, ruby: "2.7"),
-        Distribution.define("jammy", "ubuntu", %w[22.04 jammy jellyfish default], debhelper_compat: 13, ruby: "3.0"),
-        Distribution.define("noble", "ubuntu", %w[24.04 noble numbat default], debhelper_compat: 13, ruby: "3.2"),
-        Distribution.define("stretch", "debian", %w[9 stretch default], debhelper_compat: 10, ruby: "2.3"),
-        Distribution.define("buster", "debian", %w[10 buster default], debhelper_compat: 12, ruby: "2.5"),
-        Distribution.define("bullseye", "debian", %w[11 bullseye default], debhelper_compat: 13, ruby: "2.7"),
-        Distribution.define("bookworm", "debian", %w[12 bookworm default], debhelper_compat: 13, ruby: "3.1"),
-        Distribution.define("trixie", "debian", %w[13 trixie default], debhelper_compat: 13, ruby: "3.3")
+        Distribution.define("xenial", "ubuntu", %w[16.04 xenial xerus default], debhelper_compat: 9, ruby: "2.3", ruby_release: "2.3.1"),
+        Distribution.define("bionic", "ubuntu", %w[18.04 bionic beaver default], debhelper_compat: 11, ruby: "2.5", ruby_release: "2.5.1"),
+        Distribution.define("focal", "ubuntu", %w[20.04 focal fossa default], debhelper_compat: 12, ruby: "2.7", ruby_release: "2.7.0"),
+        Distribution.define("jammy", "ubuntu", %w[22.04 jammy jellyfish default], debhelper_compat: 13, ruby: "3.0", ruby_release: "3.0.2"),
+        Distribution.define("noble", "ubuntu", %w[24.04 noble numbat default], debhelper_compat: 13, ruby: "3.2", ruby_release: "3.2.3"),
+        Distribution.define("stretch", "debian", %w[9 stretch default], debhelper_compat: 10, ruby: "2.3", ruby_release: "2.3.3"),
+        Distribution.define("buster", "debian", %w[10 buster default], debhelper_compat: 12, ruby: "2.5", ruby_release: "2.5.5"),
+        Distribution.define("bullseye", "debian", %w[11 bullseye default], debhelper_compat: 13, ruby: "2.7", ruby_release: "2.7.4"),
+        Distribution.define("bookworm", "debian", %w[12 bookworm default], debhelper_compat: 13, ruby: "3.1", ruby_release: "3.1.2"),
+        Distribution.define("trixie", "debian", %w[13 trixie default], debhelper_compat: 13, ruby: "3.3", ruby_release: "3.3.8")
       ].to_h { |d| [d.codename, d] }.freeze
 
       # The built-ins named in +list+ ("bionic,buster"; nil: all of them); an
@@ -110,10 +118,11 @@ module Relspec
       def self.with_overrides(definitions)
         own = (definitions || {}).to_h do |codename, definition|
           known = BUILTIN[codename]
+          compat = definition["debhelper_compat"] || known&.debhelper_compat || DEFAULT_DEBHELPER_COMPAT
           [codename, Distribution.define(codename, definition["type"] || known&.type,
                                          definition["labels"] || known&.labels || [], archive: definition["archive"],
-                                                                                      debhelper_compat: definition["debhelper_compat"] || known&.debhelper_compat ||
-                                                           DEFAULT_DEBHELPER_COMPAT, ruby: known&.ruby)]
+                                                                                      debhelper_compat: compat, ruby: known&.ruby,
+                                                                                      ruby_release: known&.ruby_release)]
         end
         BUILTIN.merge(own).freeze
       end

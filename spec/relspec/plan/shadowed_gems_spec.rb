@@ -23,9 +23,10 @@ require "relspec/plan"
 #                             (Depends: ruby-mid) and ruby-mid 1.0-1 (Depends: ruby-core)
 #   plain: both have ruby-plain 2.0-1 (Depends: ruby-other), ruby-other 1.0-1; no .gem
 #
-# and newer versions that need Ruby >= 3.2 (their gemspec's
-# required_ruby_version, also in the compact index): core 1.3.0, and
-# types 2.0.0, which needs core ~> 1.3. bookworm's Ruby is 3.1, trixie's 3.3.
+# and newer versions that need a newer Ruby (their gemspec's
+# required_ruby_version, also in the compact index): core 1.3.0 (>= 3.2),
+# and types 2.0.0 (>= 3.3.1, as grape 4.1.0), which needs core ~> 1.3.
+# bookworm's Ruby is 3.1.2, trixie's 3.3.8.
 # late 2.0.0, the only version of late, needs Ruby >= 3.2: bookworm has
 # ruby-late 1.0-1 (and in a second bookworm archive, bookworm-late, it
 # depends on ruby-core), trixie none.
@@ -43,7 +44,7 @@ RSpec.describe "distribution gems that the release's own gems would shadow" do
     GemBuilder.build(gems, "conf", "1.4.0", dependencies: { "core" => "~> 1.0" })
     GemBuilder.build(gems, "core", "1.2.0")
     GemBuilder.build(gems, "core", "1.3.0", ruby: ">= 3.2")
-    GemBuilder.build(gems, "types", "2.0.0", dependencies: { "core" => "~> 1.3" }, ruby: ">= 3.2")
+    GemBuilder.build(gems, "types", "2.0.0", dependencies: { "core" => "~> 1.3" }, ruby: ">= 3.3.1")
     GemBuilder.build(gems, "types", "1.2.2", dependencies: { "core" => ">= 0.4" })
     GemBuilder.build(gems, "types", "1.9.1", dependencies: { "core" => "~> 1.0" })
     GemBuilder.build(gems, "extra", "1.0.0", dependencies: { "mid" => ">= 1.0" })
@@ -179,7 +180,7 @@ RSpec.describe "distribution gems that the release's own gems would shadow" do
     run = relspec("plan", "specs/late-shadowed.yml", chdir: @dir, env: { "XDG_CACHE_HOME" => @dir })
     expect(run.exit_code).to eq(1)
     expect(run.stderr).to include("specs/late-shadowed.yml:5:1: error[gem-ruby]: gem late 2.0.0 needs Ruby >= 3.2, and would " \
-                                  "be built for bookworm/amd64 (Ruby 3.1) (not taken from the distribution: ruby-late 1.0-1 " \
+                                  "be built for bookworm/amd64 (Ruby 3.1.2) (not taken from the distribution: ruby-late 1.0-1 " \
                                   "(bookworm) depends on core, which the release packages at 1.2.0): it would install there " \
                                   "but not load")
     expect(run.stderr.scan("error[").size).to eq(1)
@@ -197,7 +198,7 @@ RSpec.describe "distribution gems that the release's own gems would shadow" do
     expect(run.stderr).to include("specs/new-core.yml:5:")
     expect(run.stderr).to include("error[gem-ruby]: no version of gem core in ../new-core-gems that fits what is asked " \
                                   "(gem conf 1.4.0 (~> 1.0)")
-    expect(run.stderr).to include("runs on Ruby 3.1 (bookworm): 1.3.0 needs Ruby >= 3.2")
+    expect(run.stderr).to include("runs on Ruby 3.1.2 (bookworm): 1.3.0 needs Ruby >= 3.2")
     expect(run.stderr.scan("error[").size).to eq(1)
     expect(run.stderr).not_to include("Traceback", ".rb:")
     expect(File.exist?(File.join(@dir, "releases", "new-core", "lock.yml"))).to be(false)
@@ -207,7 +208,7 @@ RSpec.describe "distribution gems that the release's own gems would shadow" do
     spec_like_rest("pinned-core", ->(yaml) { "#{yaml}gems: { core: 1.3.0 }\n" })
     run = relspec("plan", "specs/pinned-core.yml", chdir: @dir, env: { "XDG_CACHE_HOME" => @dir })
     expect(run.exit_code).to eq(1)
-    expect(run.stderr).to include("specs/pinned-core.yml:10:15: error[gem-ruby]: gem core 1.3.0 of gems: needs Ruby >= 3.2, which Ruby 3.1 (bookworm) " \
+    expect(run.stderr).to include("specs/pinned-core.yml:10:15: error[gem-ruby]: gem core 1.3.0 of gems: needs Ruby >= 3.2, which Ruby 3.1.2 (bookworm) " \
                                   "is not: it would install there but not load")
     expect(run.stderr.scan("error[").size).to eq(1)
     expect(run.stderr).not_to include("Traceback", ".rb:")

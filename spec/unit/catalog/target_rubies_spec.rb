@@ -15,17 +15,21 @@ RSpec.describe Relspec::Catalog::TargetRubies do
     expect(described_class.describe(rubies.refusing(Gem::Requirement.new(">= 3.4")))).to eq("Ruby 3.1 (bookworm), Ruby 3.3 (trixie)")
   end
 
-  # bookworm's Ruby is 3.1.2, but the distribution knows "3.1": what needs a later 3.1 is not taken for it
-  it "takes a distribution's Ruby as the first release of its major.minor" do
+  # grape 4.1.0 needs Ruby >= 3.3.1: trixie's 3.3.8 runs it, a Ruby known only as "3.3" is not trusted to
+  it "compares the Ruby's release where it is known, else the first release of its major.minor" do
     expect(rubies.refusing(Gem::Requirement.new(">= 3.1.0"))).to eq([])
     expect(rubies.refusing(Gem::Requirement.new(">= 3.1.1"))).to eq([%w[bookworm 3.1]])
+    released = described_class.new("bookworm" => "3.1.2", "trixie" => "3.3.8")
+    expect(released.refusing(Gem::Requirement.new(">= 3.3.1"))).to eq([%w[bookworm 3.1.2]])
+    expect(released.refusing(Gem::Requirement.new(">= 3.1.3"))).to eq([%w[bookworm 3.1.2]])
+    expect(released.without(["bookworm"]).rubies).to eq("trixie" => "3.3.8")
   end
 
   it "reads each target's Ruby from the built-in distributions, and checks none it does not know" do
     effective = Struct.new(:targets, :distributions)
                       .new({ "bookworm" => ["amd64"], "trixie" => ["arm64"], "mine" => ["amd64"] },
                            Relspec::ReleaseSpec::Distributions::BUILTIN)
-    expect(described_class.of(effective).rubies).to eq("bookworm" => "3.1", "trixie" => "3.3")
+    expect(described_class.of(effective).rubies).to eq("bookworm" => "3.1.2", "trixie" => "3.3.8")
     expect(described_class.of(effective)).to be_frozen
   end
 end

@@ -46,7 +46,7 @@ RSpec.describe Relspec::Plan::GemRubyCheck do
     expect { described_class.call(plan("bookworm/amd64" => :build, "trixie/amd64" => :build), release_catalog, resolution) }
       .to raise_error(Relspec::InvalidInput) do |error|
         expect(error.diagnostics.map { |diagnostic| [diagnostic.rule, diagnostic.message, diagnostic.location.to_s] })
-          .to eq([["gem-ruby", "gem core 1.3.0 needs Ruby >= 3.2, and would be built for bookworm/amd64 (Ruby 3.1) " \
+          .to eq([["gem-ruby", "gem core 1.3.0 needs Ruby >= 3.2, and would be built for bookworm/amd64 (Ruby 3.1.2) " \
                                "(not taken from the distribution: ruby-web 1.6.2-3 (bookworm) depends on core, which the " \
                                "release packages at 1.3.0): it would install there but not load", "#{@dir}/specs/rel.yml:5:1"]])
       end

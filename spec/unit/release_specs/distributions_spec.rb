@@ -25,6 +25,8 @@ RSpec.describe Relspec::ReleaseSpec::Distributions do
       expect([trixie.type, trixie.labels, trixie.osdeps_type_key, trixie.osdeps_labels_key])
         .to eq(["debian", %w[13 trixie default], "debian", "13,trixie"])
       expect([trixie.ruby, trixie.ruby_version_keyword, trixie.debhelper_compat]).to eq(["3.3", "ruby33", 13])
+      # ruby3.3 3.3.8-2: grape 4.1.0 (Ruby >= 3.3.1) runs there
+      expect([trixie.ruby_release, described_class::BUILTIN.fetch("bookworm").ruby_release]).to eq(%w[3.3.8 3.1.2])
       expect(trixie.ruby_install_dirs("amd64")).to eq(%w[lib/ruby/3.3.0 lib/x86_64-linux-gnu/ruby/3.3.0])
       expect(trixie.ruby_executable).to eq("/usr/bin/ruby3.3")
     end
@@ -36,7 +38,8 @@ RSpec.describe Relspec::ReleaseSpec::Distributions do
 
     it "keeps its built-in facts when a spec only adds an archive" do
       own = described_class.with_overrides("trixie" => { "archive" => { "host" => true } }).fetch("trixie")
-      expect([own.labels, own.ruby, own.debhelper_compat, own.archive.host?]).to eq([%w[13 trixie default], "3.3", 13, true])
+      expect([own.labels, own.ruby, own.ruby_release, own.debhelper_compat, own.archive.host?])
+        .to eq([%w[13 trixie default], "3.3", "3.3.8", 13, true])
     end
   end
 
