@@ -131,27 +131,38 @@ RSpec.describe "distribution gems that the release's own gems would shadow" do
                              "release packages at 1.2.0\n")
   end
 
-  it "stops with one error saying why, when gem_source has no version of the gem it must package" do
-    folder = File.join(@dir, "no-types-gems")
-    FileUtils.mkdir_p(folder)
-    FileUtils.cp(Dir.glob(File.join(@dir, "server", "gems", "*.gem")).grep_v(%r{/types-}), folder)
-    File.write(File.join(@dir, "specs", "offline.yml"),
-               File.read(File.join(@dir, "specs", "rest.yml")).sub("release: rest", "release: offline")
-                   .sub(/^gem_source: .*$/, "gem_source: ../no-types-gems"))
-    run = relspec("plan", "specs/offline.yml", chdir: @dir, env: { "XDG_CACHE_HOME" => @dir })
-    expect(run.exit_code).to eq(1)
-    expect(run.stderr).to include("error[gem-unresolvable]: no version of gem types in ../no-types-gems fits what is asked: " \
-                                  "gem web 4.1.0 (>= 1.1); it has none (not taken from the distribution: ruby-types 1.2.2-2 " \
-                                  "(bookworm) depends on core, which the release packages at 1.2.0)")
-    expect(run.stderr.scan("error[").size).to eq(1)
-    expect(run.stderr).not_to include("Traceback", ".rb:")
-    expect(File.exist?(File.join(@dir, "releases", "offline", "lock.yml"))).to be(false)
+  # specs/<name>.yml: rest.yml as +change+ makes it, under another release name
+  def spec_like_rest(name, change)
+    File.write(File.join(@dir, "specs", "#{name}.yml"),
+               change.call(File.read(File.join(@dir, "specs", "rest.yml")).sub("release: rest", "release: #{name}")))
+    File.join(@dir, "specs", "#{name}.yml")
   end
 
-  def spec_like_rest(name, text)
-    File.write(File.join(@dir, "specs", "#{name}.yml"),
-               File.read(File.join(@dir, "specs", "rest.yml")).sub("release: rest", "release: #{name}").then { |yaml| text.call(yaml) })
-    File.join(@dir, "specs", "#{name}.yml")
+  # A gem_source folder <name> with the server's .gem files but those +left_out+ matches.
+  def gem_folder(name, left_out)
+    folder = File.join(@dir, name)
+    FileUtils.mkdir_p(folder)
+    FileUtils.cp(Dir.glob(File.join(@dir, "server", "gems", "*.gem")).grep_v(left_out), folder)
+    "../#{name}"
+  end
+
+  # relspec plan of specs/<name>.yml stops with one error and writes no lock: its stderr.
+  def refused_plan(name)
+    run = relspec("plan", "specs/#{name}.yml", chdir: @dir, env: { "XDG_CACHE_HOME" => @dir })
+    expect(run.exit_code).to eq(1)
+    expect(run.stderr.scan("error[").size).to eq(1)
+    expect(run.stderr).not_to include("Traceback", ".rb:")
+    expect(File.exist?(File.join(@dir, "releases", name, "lock.yml"))).to be(false)
+    run.stderr
+  end
+
+  it "stops with one error saying why, when gem_source has no version of the gem it must package" do
+    source = gem_folder("no-types-gems", %r{/types-})
+    spec_like_rest("offline", ->(yaml) { yaml.sub(/^gem_source: .*$/, "gem_source: #{source}") })
+    expect(refused_plan("offline"))
+      .to include("error[gem-unresolvable]: no version of gem types in ../no-types-gems fits what is asked: gem web 4.1.0 " \
+                  "(>= 1.1); it has none (not taken from the distribution: ruby-types 1.2.2-2 (bookworm) depends on core, " \
+                  "which the release packages at 1.2.0)")
   end
 
   # core 1.3.0 and types 2.0.0 would install on bookworm but not load there
@@ -162,7 +173,7 @@ RSpec.describe "distribution gems that the release's own gems would shadow" do
     end
     expect(@result.catalog.package("types").version).to eq("1.9.1")
     # for trixie alone, the newest: one version serves every target of a spec
-    trixie = spec_like_rest("trixie-only", ->(yaml) { yaml.sub("targets: { bookworm: [amd64], trixie: [amd64] }", "targets: { trixie: [amd64] }") })
+    trixie = spec_like_rest("trixie-only", ->(yaml) { yaml.sub(/^targets: .*$/, "targets: { trixie: [amd64] }") })
     decided = Relspec::Plan.run(trixie, cache_dir: nil).plan.targets.fetch(Relspec::Plan::Target.parse("trixie/amd64"))
     expect(decided.transform_values { |decision| decision.to_h["version"] }.slice("core", "types"))
       .to eq("core" => "1.3.0-1~trixie", "types" => "2.0.0-1~trixie")
@@ -177,40 +188,25 @@ RSpec.describe "distribution gems that the release's own gems would shadow" do
 
   it "stops when the distribution's package cannot be taken there after all (it depends on a gem the release builds)" do
     spec_like_rest("late-shadowed", ->(yaml) { yaml.sub("path: ../bookworm,", "path: ../bookworm-late,") })
-    run = relspec("plan", "specs/late-shadowed.yml", chdir: @dir, env: { "XDG_CACHE_HOME" => @dir })
-    expect(run.exit_code).to eq(1)
-    expect(run.stderr).to include("specs/late-shadowed.yml:5:1: error[gem-ruby]: gem late 2.0.0 needs Ruby >= 3.2, and would " \
-                                  "be built for bookworm/amd64 (Ruby 3.1.2) (not taken from the distribution: ruby-late 1.0-1 " \
-                                  "(bookworm) depends on core, which the release packages at 1.2.0): it would install there " \
-                                  "but not load")
-    expect(run.stderr.scan("error[").size).to eq(1)
-    expect(run.stderr).not_to include("Traceback", ".rb:")
-    expect(File.exist?(File.join(@dir, "releases", "late-shadowed", "lock.yml"))).to be(false)
+    expect(refused_plan("late-shadowed"))
+      .to include("specs/late-shadowed.yml:5:1: error[gem-ruby]: gem late 2.0.0 needs Ruby >= 3.2, and would be built for " \
+                  "bookworm/amd64 (Ruby 3.1.2) (not taken from the distribution: ruby-late 1.0-1 (bookworm) depends on core, " \
+                  "which the release packages at 1.2.0): it would install there but not load")
   end
 
   it "stops with one error naming the gem, the target and its Ruby, when no version runs there" do
-    folder = File.join(@dir, "new-core-gems")
-    FileUtils.mkdir_p(folder)
-    FileUtils.cp(Dir.glob(File.join(@dir, "server", "gems", "*.gem")).grep_v(%r{/core-1\.2\.0}), folder)
-    spec_like_rest("new-core", ->(yaml) { yaml.sub(/^gem_source: .*$/, "gem_source: ../new-core-gems") })
-    run = relspec("plan", "specs/new-core.yml", chdir: @dir, env: { "XDG_CACHE_HOME" => @dir })
-    expect(run.exit_code).to eq(1)
-    expect(run.stderr).to include("specs/new-core.yml:5:")
-    expect(run.stderr).to include("error[gem-ruby]: no version of gem core in ../new-core-gems that fits what is asked " \
-                                  "(gem conf 1.4.0 (~> 1.0)")
-    expect(run.stderr).to include("runs on Ruby 3.1.2 (bookworm): 1.3.0 needs Ruby >= 3.2")
-    expect(run.stderr.scan("error[").size).to eq(1)
-    expect(run.stderr).not_to include("Traceback", ".rb:")
-    expect(File.exist?(File.join(@dir, "releases", "new-core", "lock.yml"))).to be(false)
+    source = gem_folder("new-core-gems", %r{/core-1\.2\.0})
+    spec_like_rest("new-core", ->(yaml) { yaml.sub(/^gem_source: .*$/, "gem_source: #{source}") })
+    stderr = refused_plan("new-core")
+    expect(stderr).to include("specs/new-core.yml:5:1: error[gem-ruby]: no version of gem core in ../new-core-gems that fits " \
+                              "what is asked (gem conf 1.4.0 (~> 1.0)")
+    expect(stderr).to include("runs on Ruby 3.1.2 (bookworm): 1.3.0 needs Ruby >= 3.2")
   end
 
   it "refuses a version of gems: that a target's Ruby cannot load, at its entry" do
     spec_like_rest("pinned-core", ->(yaml) { "#{yaml}gems: { core: 1.3.0 }\n" })
-    run = relspec("plan", "specs/pinned-core.yml", chdir: @dir, env: { "XDG_CACHE_HOME" => @dir })
-    expect(run.exit_code).to eq(1)
-    expect(run.stderr).to include("specs/pinned-core.yml:10:15: error[gem-ruby]: gem core 1.3.0 of gems: needs Ruby >= 3.2, which Ruby 3.1.2 (bookworm) " \
-                                  "is not: it would install there but not load")
-    expect(run.stderr.scan("error[").size).to eq(1)
-    expect(run.stderr).not_to include("Traceback", ".rb:")
+    expect(refused_plan("pinned-core"))
+      .to include("specs/pinned-core.yml:10:15: error[gem-ruby]: gem core 1.3.0 of gems: needs Ruby >= 3.2, which Ruby 3.1.2 " \
+                  "(bookworm) is not: it would install there but not load")
   end
 end
