@@ -83,8 +83,8 @@ RSpec.describe "the README's example command" do
   it "is installed on trixie by real autoproj through relspec's package set, at trixie's versions, building nothing" do
     output, status = @demo
     expect(status).to be_success, output
-    user = AutoprojUserSystem.new(File.join(CliRunner::CACHE, "relspec", "chroots", "trixie-amd64.tar.zst"),
-                                  Dir.mktmpdir("relspec-trixie-user"))
+    dir = Dir.mktmpdir("relspec-trixie-user")
+    user = AutoprojUserSystem.new(File.join(CliRunner::CACHE, "relspec", "chroots", "trixie-amd64.tar.zst"), dir)
     server = demo_server
     user.install_autoproj(File.join(CliRunner::ROOT, "Gemfile.lock"))
     # what the user's Rock package sets define (the `ruby` osdep of
@@ -108,7 +108,7 @@ RSpec.describe "the README's example command" do
                                               "/opt/rock/demo-child/rock-demo-child-ruby-tools-orocos.rb/lib/orocos.rb"])
   ensure
     server&.stop
-    user&.remove
+    FileUtils.rm_rf(dir) if dir # the whole system: nothing of it stays, failed or not
   end
 
   # The packages a demo-child user installs: its own and the rest from demo-base.

@@ -13,8 +13,9 @@ require_relative "installed_system"
 # package set (a git repository, as users get it) to its manifest, chooses a
 # release and runs autoproj as root. autoproj runs apt-get through sudo, in
 # the system; the network is this machine's, so a repository served on
-# 127.0.0.1 is the user's repository server. Nothing reaches this machine:
-# #remove deletes the folder.
+# 127.0.0.1 is the user's repository server. Nothing reaches this machine
+# (every command runs in the system's own mount namespace): removing the
+# folder removes it all.
 class AutoprojUserSystem
   # what a Debian user installs to run autoproj (it calls apt-get through sudo)
   PACKAGES = %w[ruby ruby-dev git build-essential sudo].freeze
@@ -26,7 +27,6 @@ class AutoprojUserSystem
 
   # +tarball+: the distribution's chroot tarball; +dir+: the system's folder.
   def initialize(tarball, dir)
-    @dir = dir
     @system = InstalledSystem.new(tarball, dir)
   end
 
@@ -81,9 +81,5 @@ class AutoprojUserSystem
   # what autoproj built from source.
   def built_from_source
     Dir.glob("**/build/CMakeCache.txt", base: @system.path("#{WORKSPACE}/src")).map { |path| path.delete_suffix("/build/CMakeCache.txt") }.sort
-  end
-
-  def remove
-    FileUtils.rm_rf(@dir)
   end
 end
