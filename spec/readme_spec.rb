@@ -2,6 +2,7 @@
 
 require "spec_helper"
 require "yaml"
+require_relative "support/autoproj_user_system"
 
 # The README's first two commands are the newcomer's contract; CI runs the
 # second one, so the two must not drift apart.
@@ -41,11 +42,15 @@ RSpec.describe "the README's example command" do
   # committed — the lock identifies the ancestor by what it provides, not by
   # its freshly dated Release file. When the example changes, `bin/demo`
   # regenerates releases/ (commit it).
-  it "builds and publishes both releases for bookworm and trixie for real and regenerates releases/ exactly as committed" do
+  before(:all) do
     %w[examples/workspace build/repositories build/demo-base build/demo-child].each do |dir|
       FileUtils.rm_rf(File.join(CliRunner::ROOT, dir))
     end
-    output, status = Open3.capture2e({ "RELSPEC_DEMO_BACKEND" => "host" }, File.join(CliRunner::ROOT, "bin", "demo"))
+    @demo = Open3.capture2e({ "RELSPEC_DEMO_BACKEND" => "host" }, File.join(CliRunner::ROOT, "bin", "demo"))
+  end
+
+  it "builds and publishes both releases for bookworm and trixie for real and regenerates releases/ exactly as committed" do
+    output, status = @demo
     expect(status).to be_success, output
     expect(output).to include("2 specs valid: specs/demo-base.yml specs/demo-child.yml")
     expect(output).to include('blacklisted by "base/types" (the project needs the 2020 types API)')
@@ -63,6 +68,60 @@ RSpec.describe "the README's example command" do
     expect(untracked).to eq("")
     check = relspec("plan", "--check")
     expect([check.stdout, check.exit_code]).to eq(["", 0])
+  end
+
+  # The user's side on trixie, for real (bookworm's runs on this machine:
+  # spec/relspec/osdeps/package_set_workspace_spec.rb): a clean trixie
+  # system (the chroot tarball the demo's trixie builds used, unpacked), in
+  # which the user installs Ruby 3.3 with apt and autoproj with gem; the
+  # example workspace with the demo's package set in its manifest and
+  # demo-child chosen; the repositories served where the specs say users
+  # read them. autoproj installs every package of the release from them at
+  # its trixie version and builds nothing; the Ruby library of the release
+  # loads with trixie's Ruby in the workspace's environment (`autoproj exec`,
+  # env.sh's).
+  it "is installed on trixie by real autoproj through relspec's package set, at trixie's versions, building nothing" do
+    output, status = @demo
+    expect(status).to be_success, output
+    dir = Dir.mktmpdir("relspec-trixie-user")
+    user = AutoprojUserSystem.new(File.join(CliRunner::CACHE, "relspec", "chroots", "trixie-amd64.tar.zst"), dir)
+    server = demo_server
+    user.install_autoproj(File.join(CliRunner::ROOT, "Gemfile.lock"))
+    # what the user's Rock package sets define (the `ruby` osdep of
+    # tools/orocos.rb's manifest, which autoproj aliases to ruby33, and
+    # nokogiri), as package_set_workspace_spec's user has them
+    user.add_workspace(File.join(CliRunner::ROOT, "examples", "workspace"), build_path("package-set"),
+                       release: "demo-child", osdeps: "ruby: ignore\nruby33: ignore\nnokogiri:\n  debian: ruby-nokogiri\n")
+    user.autoproj!("osdeps")
+    versions = published("demo-base", "trixie").merge(published("demo-child", "trixie"))
+    expect(user.installed("rock-demo-*")).to eq(DEMO_CHILD_DEBS.to_h { |name| [name, versions.fetch(name)] })
+    expect(user.installed("rock-demo-*").values).to all(end_with("~trixie"))
+    expect(File.read(user.system.path("etc/apt/sources.list.d/relspec-demo-child.list")))
+      .to end_with("deb [trusted=yes] http://127.0.0.1:8000/demo-child trixie main\n")
+    build = user.autoproj!("build")
+    expect(build).to include("relspec: demo-child for debian 13,trixie (amd64): 7 binary packages, 0 built from source")
+    expect(build).not_to match(/building|configuring/)
+    expect(user.built_from_source).to eq([])
+    # the workspace's environment (env.sh's) holds the release's RUBYLIB
+    ruby = user.autoproj!("exec", "ruby", "-e", 'require "orocos"; puts RUBY_VERSION, $LOADED_FEATURES.grep(/orocos/)')
+    expect(ruby.lines.map(&:chomp)).to match([start_with("3.3."),
+                                              "/opt/rock/demo-child/rock-demo-child-ruby-tools-orocos.rb/lib/orocos.rb"])
+  ensure
+    server&.stop
+    FileUtils.rm_rf(dir) if dir # the whole system: nothing of it stays, failed or not
+  end
+
+  # The packages a demo-child user installs: its own and the rest from demo-base.
+  DEMO_CHILD_DEBS = %w[rock-demo-base-base-cmake rock-demo-base-base-logging rock-demo-base-data-models
+                       rock-demo-base-tools-legacy rock-demo-child-base-types rock-demo-child-drivers-iodrivers-base
+                       rock-demo-child-ruby-tools-orocos.rb].freeze
+
+  # build/repositories at http://127.0.0.1:8000, where the specs (and so
+  # the package set) say users read them.
+  def demo_server
+    HttpServer.new(build_path("repositories"), port: 8000)
+  rescue Errno::EADDRINUSE
+    raise "port 8000 of 127.0.0.1 is taken: the demo's package set sends users' apt there"
   end
 
   def build_path(*parts)

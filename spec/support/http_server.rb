@@ -6,15 +6,17 @@ require "logger"
 # A real HTTP server on 127.0.0.1 serving a folder, for repositories read
 # over the network. Paths can be made to answer 404 or 500, or to stall, and
 # every request is counted. The folder is also served below any first path
-# segment (/x/dists/… is /dists/…), so one server can play several hosts.
+# segment (/x/dists/… is /dists/…, unless the folder has x/dists/…), so one
+# server can play several hosts.
 class HttpServer
   attr_reader :requests
 
-  def initialize(root)
+  # +port+: a free one unless given (the port a published package set names).
+  def initialize(root, port: 0)
     @root = root
     @requests = []
     @faults = {}
-    @server = WEBrick::HTTPServer.new(BindAddress: "127.0.0.1", Port: 0, DocumentRoot: root,
+    @server = WEBrick::HTTPServer.new(BindAddress: "127.0.0.1", Port: port, DocumentRoot: root,
                                       Logger: WEBrick::Log.new(File::NULL), AccessLog: [])
     @server.mount_proc("/") { |request, response| serve(request, response) }
     @thread = Thread.new { @server.start }
@@ -53,13 +55,20 @@ class HttpServer
     response.status = 503 if fault == 503
     return if fault && fault != :no_last_modified
 
-    file = File.join(@root, path.sub(%r{\A/[^/]+/(?=dists/)}, "/").delete_prefix("/moved"))
-    if File.file?(file)
+    file = file_for(path)
+    if file
       response.body = File.binread(file)
       # as a web server serving files does: archive imports are versioned by it
       response["Last-Modified"] = File.mtime(file).httpdate unless fault == :no_last_modified
     else
       response.status = 404
     end
+  end
+
+  # The served file of +path+: the folder's own, else the one below its
+  # first segment; nil when there is none.
+  def file_for(path)
+    path = path.delete_prefix("/moved")
+    [path, path.sub(%r{\A/[^/]+/(?=dists/)}, "/")].map { |candidate| File.join(@root, candidate) }.find { |file| File.file?(file) }
   end
 end

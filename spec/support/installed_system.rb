@@ -19,6 +19,7 @@ class InstalledSystem
   end
 
   PATH = "/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin"
+  LOCAL_AUTHORITIES = "/usr/local/share/ca-certificates"
 
   attr_reader :root
 
@@ -35,6 +36,13 @@ class InstalledSystem
 
     # the name server of now, not of the day the tarball was made
     FileUtils.cp("/etc/resolv.conf", File.join(@root, "etc", "resolv.conf")) if File.file?("/etc/resolv.conf")
+    # and the certificate authorities this machine adds (a proxy's, which
+    # HTTPS downloads such as rubygems.org's pass through): the system's
+    # ca-certificates takes them in when it is installed or when
+    # update-ca-certificates runs
+    local = Dir.glob(File.join(LOCAL_AUTHORITIES, "*.crt"))
+    FileUtils.mkdir_p(path(LOCAL_AUTHORITIES))
+    FileUtils.cp(local, path(LOCAL_AUTHORITIES))
   end
 
   # Installs the .deb files +debs+ and the distribution packages named in
