@@ -18,16 +18,19 @@ module Relspec
     class InterfaceVerdicts
       # The verdicts of a run building +entries+ (plan entries) over
       # +results+ (BuildResults, as the run found them) in +dir+.
-      def self.of(results, entries, dir)
-        new(entries.to_h { |entry| [entry.source, results[entry.source]] }, dir, entries: entries)
+      # +refused+: why the early cutoff keeps nothing in this run (the
+      # spec's early_cutoff, --rebuild-dependents), or nil.
+      def self.of(results, entries, dir, refused: nil)
+        new(entries.to_h { |entry| [entry.source, results[entry.source]] }, dir, entries: entries, refused: refused)
       end
 
       # +previous+: source => Builder::BuildResults::Record (or nil) before the run;
       # +dir+: the target folder; +compare+: how two dumps are compared;
       # +entries+: the plan's entries (their build_depends give each
       # build's closure, their cutoff the early cutoff's candidates).
-      def initialize(previous, dir, compare: Comparison.method(:compare), entries: [])
+      def initialize(previous, dir, compare: Comparison.method(:compare), entries: [], refused: nil)
         @previous = previous
+        @refused = refused
         @dir = dir
         @check = InterfaceCheck.new(compare: compare)
         @entries = entries.to_h { |entry| [entry.source, entry] }
@@ -43,12 +46,33 @@ module Relspec
       def decide(entry, files)
         previous = @previous[entry.source]
         interface = comparable?(previous, entry) ? interface_of(entry, previous, files) : nil
-        cutoff = entry.cutoff && cutoff_of(entry)
+        cutoff = entry.cutoff && !cutoff(entry.source) ? cutoff_of(entry) : nil # #keep decides it first
         @lock.synchronize do
           @verdicts[entry.source] = interface
-          @cutoffs[entry.source] = cutoff
+          @cutoffs[entry.source] ||= cutoff
         end
         interface
+      end
+
+      # What the early cutoff decides for +entry+ before it is built: the
+      # verdicts of its closure exist once it is ready to build. A
+      # Builder::BuildResults::Cutoff (kept for #cutoff), or nil when
+      # +entry+ is no candidate.
+      def keep(entry)
+        return nil unless entry.cutoff
+
+        cutoff = @refused ? refusal(entry) : cutoff_of(entry)
+        @lock.synchronize { @cutoffs[entry.source] = cutoff }
+      end
+
+      # +source+, kept in this run, is built after all (a dependent built
+      # now names its new version): +reason+ replaces the keep.
+      def revoke(source, reason)
+        @lock.synchronize do
+          kept = @cutoffs[source]
+          @cutoffs[source] = Builder::BuildResults::Cutoff.new(keeps: kept.keeps, verdict: "rebuild", reason: reason,
+                                                               evidence: [].freeze).freeze
+        end
       end
 
       # The verdict decided for +source+ in this run, or nil.
@@ -86,14 +110,33 @@ module Relspec
       # nothing the candidate builds against changed, also through the
       # headers of a dependency's dependency.
       def cutoff_of(entry)
-        changed = closure(entry.source).find { |source| !unchanged?(source) }
+        closure = closure(entry.source)
+        changed = closure.find { |source| !unchanged?(source) }
         reason = if changed
                    verdict = interface(changed)
                    verdict ? "the interface of #{changed} changed" : "#{changed} has no verdict to go by"
                  else
                    "the interface of #{entry.cutoff.because.join(', ')} did not change"
                  end
-        Builder::BuildResults::Cutoff.new(keeps: entry.cutoff.keeps, verdict: changed ? "rebuild" : "keep", reason: reason).freeze
+        Builder::BuildResults::Cutoff.new(keeps: entry.cutoff.keeps, verdict: changed ? "rebuild" : "keep", reason: reason,
+                                          evidence: changed ? [].freeze : evidence(closure)).freeze
+      end
+
+      # One line per package of a kept candidate's closure: what its
+      # interface was compared against, or the version it was kept at.
+      def evidence(closure)
+        closure.map do |source|
+          kept = @lock.synchronize { @cutoffs[source] }
+          next "#{source} kept at #{kept.keeps}" if kept&.keep?
+
+          found = interface(source)
+          "#{source}: #{found.compared} files compared with #{found.against}, unchanged"
+        end.freeze
+      end
+
+      def refusal(entry)
+        Builder::BuildResults::Cutoff.new(keeps: entry.cutoff.keeps, verdict: "rebuild", reason: @refused,
+                                          evidence: [].freeze).freeze
       end
 
       # A build's side, its .debs unpacked into +root+ (for the headers).

@@ -29,6 +29,8 @@ module Relspec
       # The cause chain on one line, nearest step first; for a new revision
       # of the same source, why it was rebuilt comes first.
       def causes(change)
+        return "kept at #{change.new.version}: #{change.new.kept}" if change.kind == "kept"
+
         chain = change.causes.join(" ← ")
         return chain unless change.rebuilt_because
 

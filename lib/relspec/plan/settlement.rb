@@ -87,7 +87,7 @@ module Relspec
         final = Decision.new(**decision.each_pair.to_h, kind: result.published ? :published : :build,
                                                         version: result.version, debian_digest: digest,
                                                         depends: @inputs.dependency_names(package, decisions).uniq.sort.freeze,
-                                                        cutoff: cutoff)
+                                                        cutoff: cutoff, kept: result.kept)
                         .freeze
         [final, Work.new(input: input, overlay: overlay, digest: digest).freeze]
       end

@@ -46,15 +46,15 @@ RSpec.describe Relspec::Abi::InterfaceVerdicts, :tmpdir do
   # lib <- mid <- top: mid and top are candidates (only lib's new version
   # moved mid, only mid's moved top). lib was built at its planned version
   # by an earlier run, whose record holds its verdict.
-  def run_with(lib_verdict)
+  def run_with(lib_verdict, decide: true, refused: nil)
     lib = plan_entry("lib", "1-2")
     mid = plan_entry("mid", "1-2", needs: ["lib"], cutoff: Relspec::Builder::BuildPlan::Cutoff.new(keeps: "1-1", because: ["lib"]))
     top = plan_entry("top", "1-2", needs: ["mid"], cutoff: Relspec::Builder::BuildPlan::Cutoff.new(keeps: "1-1", because: ["mid"]))
     interface = results::Interface.new(against: "1-1", verdict: lib_verdict, compared: 2, changes: [])
     previous = { "lib" => results::Record.new(source: "lib", package: "base/lib", version: "1-2", status: "built", files: [],
                                               interface: interface) }
-    verdicts = described_class.new(previous, @dir, entries: [lib, mid, top])
-    [mid, top].each { |built| verdicts.decide(built, []) }
+    verdicts = described_class.new(previous, @dir, entries: [lib, mid, top], refused: refused)
+    [mid, top].each { |built| verdicts.decide(built, []) } if decide
     verdicts
   end
 
@@ -62,9 +62,27 @@ RSpec.describe Relspec::Abi::InterfaceVerdicts, :tmpdir do
     verdicts = run_with("unchanged")
     expect(verdicts.closure("top")).to eq(%w[lib mid])
     expect(verdicts.cutoff("mid").to_h).to eq("keeps" => "1-1", "verdict" => "keep",
-                                              "reason" => "the interface of lib did not change")
+                                              "reason" => "the interface of lib did not change",
+                                              "evidence" => ["lib: 2 files compared with 1-1, unchanged"])
     expect(verdicts.cutoff("top").to_h).to eq("keeps" => "1-1", "verdict" => "keep",
-                                              "reason" => "the interface of mid did not change")
+                                              "reason" => "the interface of mid did not change",
+                                              "evidence" => ["lib: 2 files compared with 1-1, unchanged", "mid kept at 1-1"])
+  end
+
+  # The run decides a candidate before building it (#keep): its closure is
+  # built then; a keep revoked names why it was built after all.
+  it "decides a candidate before it is built, revokes a keep, and refuses every keep when told why" do
+    verdicts = run_with("unchanged", decide: false)
+    mid = verdicts.instance_variable_get(:@entries)["mid"]
+    expect(verdicts.keep(verdicts.instance_variable_get(:@entries)["lib"])).to be_nil # no candidate
+    expect(verdicts.keep(mid).verdict).to eq("keep")
+    verdicts.revoke("mid", "built after all: top is built")
+    expect(verdicts.cutoff("mid").to_h).to eq("keeps" => "1-1", "verdict" => "rebuild", "reason" => "built after all: top is built")
+    verdicts.decide(mid, []) # the build that follows keeps the revoked decision
+    expect(verdicts.cutoff("mid").reason).to eq("built after all: top is built")
+    refused = run_with("unchanged", decide: false, refused: "--rebuild-dependents: every candidate is built")
+    expect(refused.keep(refused.instance_variable_get(:@entries)["mid"]).to_h)
+      .to eq("keeps" => "1-1", "verdict" => "rebuild", "reason" => "--rebuild-dependents: every candidate is built")
   end
 
   it "rebuilds a candidate whose closure holds a changed interface, also two steps down" do
