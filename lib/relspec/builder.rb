@@ -268,9 +268,12 @@ module Relspec
       end
 
       # Why the early cutoff keeps nothing in this run, or nil: the
-      # spec's early_cutoff, --rebuild-dependents.
+      # spec's early_cutoff, --rebuild-dependents, the Slurm engine (its
+      # jobs keep no ABI dumps, so no verdict exists to keep by;
+      # docs/scale-out.md).
       def refusal
         return "--rebuild-dependents: every candidate is built" if @rebuild_dependents
+        return "not decided on Slurm: its builds keep no ABI dumps" if slurm?
 
         setting = @effective.early_cutoff
         setting.enabled ? nil : "the early cutoff is off for #{@effective.release}: #{setting.reason}"
@@ -288,7 +291,8 @@ module Relspec
                          duration: started ? outcome.duration : nil, log: started ? OutputTree.log_name(entry.source) : nil,
                          reason: outcome.reason&.gsub("#{dir}/", ""), files: files.freeze,
                          interface: outcome.status == :built ? verdicts[entry.source] : nil,
-                         cutoff: decided ? verdicts.cutoff(entry.source) : nil
+                         # a Slurm build was never decided before: its refusal now
+                         cutoff: decided ? verdicts.cutoff(entry.source) || verdicts.keep(entry) : nil
                        ))
       end
 

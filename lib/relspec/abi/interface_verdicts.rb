@@ -3,6 +3,7 @@
 require "fileutils"
 require "tmpdir"
 require_relative "../builder/build_results"
+require_relative "../builder/build_plan"
 require_relative "interface_check"
 require_relative "comparison"
 
@@ -87,15 +88,9 @@ module Relspec
       end
 
       # The sources of the plan +source+ needs built first, directly or
-      # through others.
-      def closure(source, seen = {})
-        (@entries[source]&.build_depends || []).each do |need|
-          next if seen[need]
-
-          seen[need] = true
-          closure(need, seen)
-        end
-        seen.keys.sort
+      # through others, in plan order.
+      def closure(source)
+        Builder::BuildPlan.closure(@entries, source)
       end
 
       def comparable?(previous, entry)

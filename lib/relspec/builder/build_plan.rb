@@ -46,6 +46,22 @@ module Relspec
 
       attr_reader :dir, :release, :target, :entries
 
+      # The sources of +entries+ (source => Entry, in plan order) that
+      # +source+ needs built first, directly or through others, in plan
+      # order (dependencies first): what its build installs, and what the
+      # early cutoff goes by (docs/abi.md).
+      def self.closure(entries, source)
+        seen = {}
+        pending = [source]
+        until pending.empty?
+          (entries[pending.pop]&.build_depends || []).each do |need|
+            pending << need unless seen[need]
+            seen[need] = true
+          end
+        end
+        entries.keys.select { |one| seen[one] }
+      end
+
       # Writes +entries+ (Entry) as <dir>/plan.yml when its text changed;
       # true when it did.
       def self.write(dir, release:, target:, entries:)

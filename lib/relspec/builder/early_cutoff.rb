@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require_relative "scheduler"
+require_relative "build_plan"
 
 module Relspec
   module Builder
@@ -69,17 +70,8 @@ module Relspec
         raise BuildError, "build-dependency #{kept.source} failed" if outcome.status == :failed
       end
 
-      # The plan's sources +source+ needs built first, directly or through
-      # others, in plan order.
-      def closure(source, seen = {})
-        (@entries[source]&.build_depends || []).each do |need|
-          next if seen[need]
-
-          seen[need] = true
-          closure(need, seen)
-        end
-        order = @entries.keys
-        seen.keys.sort_by { |need| order.index(need) || order.size }
+      def closure(source)
+        BuildPlan.closure(@entries, source)
       end
     end
   end

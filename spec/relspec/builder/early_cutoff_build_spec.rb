@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require "spec_helper"
+require "json"
 require "open3"
 require "yaml"
 require_relative "../../support/build_release"
@@ -116,8 +117,18 @@ RSpec.describe "the early cutoff on a published release", order: :defined do
     expect(build.stdout).to match(/rock-ec-base-user +\S+ +kept +early cutoff: keeps #{Regexp.escape(user_first)}: the interface of #{lib} did not change/)
     expect(Dir.glob(File.join(@release.target_dir, "results", "rock-ec-base-user", "*_#{entry['version'].sub(/\A\d+:/, '')}_*.deb"))).to be_empty
 
+    FileUtils.cp(File.join(@dir, "releases", "ec", "lock.yml"), File.join(@dir, "compiled-lock.yml"))
     run!("publish", "specs/ec.yml", "--out", "out")
     expect(published).to include(lib => body["version"], "rock-ec-base-user" => user_first)
+    # the status page publish wrote, and the diff of the lock compile wrote against publish's
+    expect(File.read(File.join(@dir, "repos", "ec", "report", "index.html")))
+      .to include(">kept</span> <span class=\"muted\">kept at #{user_first}: the interface of #{lib} did not change (")
+    diff = run!("diff", "compiled-lock.yml", "releases/ec/lock.yml").stdout
+    expect(diff).to include("base/user: ", "kept at #{user_first}: the interface of #{lib} did not change (")
+    # what publish wrote of base/user is what a plan makes now (base/lib's decision moves from build to published)
+    planned = JSON.parse(run!("plan", "specs/ec.yml", "--format", "json").stdout)
+    expect(planned["targets"]["bookworm/amd64"]["base/user"]).to eq(lock["targets"]["bookworm/amd64"]["base/user"])
+    expect(planned["history"]["bookworm/amd64"]["base/user"]).to eq(lock["history"]["bookworm/amd64"]["base/user"])
     user_lock = lock["targets"]["bookworm/amd64"]["base/user"]
     expect(user_lock).to include("decision" => "published", "version" => user_first)
     expect(user_lock["kept"]).to start_with("the interface of #{lib} did not change (#{lib}: ")

@@ -71,6 +71,15 @@ RSpec.describe Relspec::Builder::BuildPlan do
     expect(error_of(text.sub('keeps: "2.0-1~bookworm"', "keeps: 2 0"))).to include('invalid Debian version "2 0"')
   end
 
+  it "gives a build's closure in plan order, dependencies first, each once" do
+    make = ->(source, needs) { described_class::Entry.new(package: source, source: source, version: "1", dsc: "x", build_depends: needs) }
+    entries = [make.call("z", []), make.call("a", ["z"]), make.call("m", %w[a z]), make.call("top", %w[m a])]
+    by_source = entries.to_h { |one| [one.source, one] }
+    expect(described_class.closure(by_source, "top")).to eq(%w[z a m])
+    expect(described_class.closure(by_source, "z")).to eq([])
+    expect(described_class.closure(by_source, "unknown")).to eq([])
+  end
+
   it "refuses binary bytes, an empty file and broken YAML" do
     expect(error_of("\x00\xff".b)).to include("plan.yml:1:", "invalid UTF-8")
     expect(error_of("")).to include("the file is empty or not a mapping")
