@@ -26,11 +26,13 @@ RSpec.describe "the early cutoff on a published release", order: :defined do
                                  files: { "cut.c" => "#include \"cut.h\"\nint cut_value(void) { return 42; }\n",
                                           "cut.h" => "int cut_value(void);\n" })
     @release.package("base/user", dependencies: ["base/lib"])
+    @release.package("base/app", dependencies: ["base/user"])
     @release.compile(spec: "repository: { path: ../repos/ec, trusted: true }\n")
     run!("build", "specs/ec.yml", "--out", "out", "--backend", "host")
     run!("publish", "specs/ec.yml", "--out", "out")
     @first = record("base/lib")
     @first_user = record("base/user")
+    @first_app = record("base/app")
   end
 
   after(:all) { FileUtils.rm_rf(@dir) }
@@ -113,13 +115,19 @@ RSpec.describe "the early cutoff on a published release", order: :defined do
     expect(user["cutoff"]).to eq("keeps" => user_first, "verdict" => "keep", "reason" => "the interface of #{lib} did not change",
                                  "evidence" => ["#{lib}: #{body['interface']['compared']} files compared with " \
                                                 "#{@first['version']}, unchanged"])
-    expect(build.stdout).to include("bookworm/amd64: 1 built, 1 kept, 0 already built, 0 failed, 0 skipped")
+    expect(build.stdout).to include("bookworm/amd64: 1 built, 2 kept, 0 already built, 0 failed, 0 skipped")
+    # base/app, whose debian/ moved only with base/user's version: kept through the chain
+    app = record("base/app")
+    expect(app).to include("status" => "kept")
+    expect(app["cutoff"]).to include("keeps" => @first_app["version"], "reason" => "the interface of rock-ec-base-user did not change")
+    expect(app["cutoff"]["evidence"]).to eq(user["cutoff"]["evidence"] + ["rock-ec-base-user kept at #{user_first}"])
     expect(build.stdout).to match(/rock-ec-base-user +\S+ +kept +early cutoff: keeps #{Regexp.escape(user_first)}: the interface of #{lib} did not change/)
     expect(Dir.glob(File.join(@release.target_dir, "results", "rock-ec-base-user", "*_#{entry['version'].sub(/\A\d+:/, '')}_*.deb"))).to be_empty
 
     FileUtils.cp(File.join(@dir, "releases", "ec", "lock.yml"), File.join(@dir, "compiled-lock.yml"))
     run!("publish", "specs/ec.yml", "--out", "out")
-    expect(published).to include(lib => body["version"], "rock-ec-base-user" => user_first)
+    expect(published).to include(lib => body["version"], "rock-ec-base-user" => user_first,
+                                 "rock-ec-base-app" => @first_app["version"])
     # the status page publish wrote, and the diff of the lock compile wrote against publish's
     expect(File.read(File.join(@dir, "repos", "ec", "report", "index.html")))
       .to include(">kept</span> <span class=\"muted\">kept at #{user_first}: the interface of #{lib} did not change (")
@@ -172,6 +180,22 @@ RSpec.describe "the early cutoff on a published release", order: :defined do
     expect(published["rock-ec-base-user"]).to eq(record("base/user")["version"])
   end
 
+  # base/app changes itself while base/lib's body change would keep
+  # base/user: base/app's debian/ names base/user's new version, so
+  # base/user is built after all, first, and published at it.
+  it "builds a kept candidate after all when a build of the run names its new version" do
+    change("cut.c", "#include \"cut.h\"\nint cut_value(void) { return 46; }\n")
+    change("app.txt", "a change of base/app\n", package: "base/app")
+    build = build_and_publish
+    user = record("base/user")
+    expect(user["status"]).to eq("built")
+    expect(user["cutoff"]).to include("verdict" => "rebuild",
+                                      "reason" => "built after all: rock-ec-base-app is built in this run and names its new version")
+    expect(record("base/app")["status"]).to eq("built")
+    expect(build.stdout).to include("bookworm/amd64: 3 built, 0 already built, 0 failed, 0 skipped")
+    expect(published).to include("rock-ec-base-user" => user["version"], "rock-ec-base-app" => record("base/app")["version"])
+  end
+
   it "decides a header change changed the interface, naming the header, and rebuilds the candidate" do
     before = record("base/lib")
     published_user = record("base/user")["version"]
@@ -187,5 +211,25 @@ RSpec.describe "the early cutoff on a published release", order: :defined do
     expect(record("base/user")["cutoff"]).to eq("keeps" => published_user, "verdict" => "rebuild",
                                                 "reason" => "the interface of #{@release.source('base/lib')} changed")
     expect(build.stdout).to include("early cutoff: rebuilt: the interface of #{@release.source('base/lib')} changed")
+  end
+
+  # A build-results.yml is untrusted: a keep of a version the repository no
+  # longer holds is refused before the repository is touched.
+  it "refuses to publish a keep whose version the repository does not hold, and publishes nothing" do
+    path = File.join(@release.target_dir, "build-results.yml")
+    results = YAML.safe_load(File.read(path))
+    user = results["packages"][@release.source("base/user")]
+    user.replace(user.slice("package", "version", "dsc_sha256").merge(
+                   "status" => "kept", "cutoff" => { "keeps" => @first_user["version"], "verdict" => "keep", "reason" => "forged" }
+                 ))
+    File.write(path, YAML.dump(results))
+    before = published
+    run = relspec("publish", "specs/ec.yml", "--out", "out", chdir: @dir)
+    expect(run.exit_code).to eq(1)
+    expect(run.stderr).to start_with("relspec: error: bookworm/amd64: rock-ec-base-user was kept at #{@first_user['version']} by the " \
+                                     "early cutoff, but the repository holds #{before['rock-ec-base-user']}; build it: " \
+                                     "relspec build --rebuild-dependents")
+    expect(run.stderr).not_to include("from /")
+    expect(published).to eq(before)
   end
 end
