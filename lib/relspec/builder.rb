@@ -285,15 +285,22 @@ module Relspec
         started = !%i[skipped kept].include?(outcome.status)
         decided = Scheduler::SUCCESSES.include?(outcome.status)
         files = outcome.status == :built ? outcome.value.map { |file| BuildResults::Produced.of(dir, relative(dir, file)) } : []
+        cutoff = decided ? verdicts.cutoff(entry.source) || verdicts.keep(entry) : nil # a Slurm build is decided now
+        files = kept_files(results[entry.source], cutoff) if outcome.status == :kept
         results.record(BuildResults::Record.new(
                          source: entry.source, package: entry.package, version: entry.version, dsc_sha256: dsc_sha256,
                          status: outcome.status.to_s,
                          duration: started ? outcome.duration : nil, log: started ? OutputTree.log_name(entry.source) : nil,
                          reason: outcome.reason&.gsub("#{dir}/", ""), files: files.freeze,
-                         interface: outcome.status == :built ? verdicts[entry.source] : nil,
-                         # a Slurm build was never decided before: its refusal now
-                         cutoff: decided ? verdicts.cutoff(entry.source) || verdicts.keep(entry) : nil
+                         interface: outcome.status == :built ? verdicts[entry.source] : nil, cutoff: cutoff
                        ))
+      end
+
+      # The files of the build a keep keeps, as the record it replaces
+      # lists them when that build is the one kept (else none): the next
+      # build of the package is compared with them (docs/abi.md).
+      def kept_files(previous, cutoff)
+        previous && (previous.built? || previous.kept?) && previous.files_version == cutoff.keeps ? previous.files : []
       end
 
       # The ABI dumps of the libraries the build's .debs ship, beside them

@@ -93,8 +93,11 @@ module Relspec
         Builder::BuildPlan.closure(@entries, source)
       end
 
+      # A build of another version, or the kept build a kept record lists,
+      # whose files are all there with the bytes recorded.
       def comparable?(previous, entry)
-        !!previous&.built? && previous.version != entry.version && previous.files.all? { |file| file.intact?(@dir) }
+        !previous.nil? && (previous.built? || previous.kept?) && !previous.files.empty? &&
+          previous.files_version != entry.version && previous.files.all? { |file| file.intact?(@dir) }
       end
 
       private
@@ -154,14 +157,14 @@ module Relspec
 
       def interface_of(entry, previous, files)
         Dir.mktmpdir("relspec-interface") do |work|
-          old = side(previous.version, previous.files.map { |file| File.join(@dir, file.name) }, File.join(work, "old"))
+          old = side(previous.files_version, previous.files.map { |file| File.join(@dir, file.name) }, File.join(work, "old"))
           new = side(entry.version, files, File.join(work, "new"))
           Builder::BuildResults::Interface.of(@check.decide(entry.package, old: old, new: new))
         end
       rescue ToolError => e
         # a comparison that cannot be made proves nothing: the interface
         # counts as changed, and the build that succeeded stays built
-        Builder::BuildResults::Interface.new(against: previous.version, verdict: "changed", compared: 0,
+        Builder::BuildResults::Interface.new(against: previous.files_version, verdict: "changed", compared: 0,
                                              changes: ["not compared: #{e.message}"].freeze).freeze
       end
     end

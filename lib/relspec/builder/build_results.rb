@@ -117,6 +117,13 @@ module Relspec
           status == "kept"
         end
 
+        # The version of the build whose files the record lists: a kept
+        # record lists the files of the build it keeps (when the target
+        # folder had them), so that the next build is compared with them.
+        def files_version
+          kept? ? cutoff.keeps : version
+        end
+
         def to_h
           { "package" => package, "version" => version, "dsc_sha256" => dsc_sha256, "status" => status,
             "duration" => duration,

@@ -111,7 +111,7 @@ RSpec.describe "the early cutoff on a published release", order: :defined do
     expect(entry["cutoff"]).to eq("keeps" => user_first, "because" => [lib])
     user = record("base/user")
     expect(user).to include("status" => "kept", "version" => entry["version"])
-    expect(user).not_to have_key("files")
+    expect(user["files"]).to eq(@first_user["files"]) # the kept build's: the next build is compared with them
     expect(user["cutoff"]).to eq("keeps" => user_first, "verdict" => "keep", "reason" => "the interface of #{lib} did not change",
                                  "evidence" => ["#{lib}: #{body['interface']['compared']} files compared with " \
                                                 "#{@first['version']}, unchanged"])
@@ -154,6 +154,10 @@ RSpec.describe "the early cutoff on a published release", order: :defined do
     build_and_publish
     user = record("base/user")
     expect(user["status"]).to eq("built")
+    # compared with the kept build, whose record the keep carried on
+    expect(user["interface"]).to include("against" => kept, "verdict" => "changed")
+    expect(user["interface"]["changes"]).to eq(["opt/rock/ec/rock-ec-base-user/share/base-user/extra.txt: added"])
+    expect(record("base/app")["cutoff"]).to include("verdict" => "rebuild", "reason" => "the interface of rock-ec-base-user changed")
     expect(revision(user["version"])).to eq(revision(kept) + 1)
     expect(revision(user["version"])).to eq(2) # the compile-time -2 was never published: given now, to these bytes
     expect(published["rock-ec-base-user"]).to eq(user["version"])

@@ -37,6 +37,19 @@ RSpec.describe Relspec::Abi::InterfaceVerdicts, :tmpdir do
     expect(verdicts.comparable?(previous, entry)).to be(false)
   end
 
+  # A kept record lists the files of the build it keeps: the next build,
+  # at the kept record's own (never built) version, is compared with them.
+  it "compares with the build a kept record keeps, not with its planned version" do
+    verdicts = described_class.new({}, @dir)
+    files = record("1-1").files
+    keep = results::Cutoff.new(keeps: "1-1", verdict: "keep", reason: "r", evidence: [])
+    kept = results::Record.new(source: "a", package: "base/a", version: "1-2", status: "kept", files: files, cutoff: keep)
+    expect(kept.files_version).to eq("1-1")
+    expect(verdicts.comparable?(kept, entry)).to be(true) # entry: 1-2, the revision after the kept one
+    without_files = results::Record.new(source: "a", package: "base/a", version: "1-2", status: "kept", files: [], cutoff: keep)
+    expect(verdicts.comparable?(without_files, entry)).to be(false) # the target folder no longer had the kept build
+  end
+
   it "decides nothing, and keeps nothing, when there is nothing to compare" do
     verdicts = described_class.of(Struct.new(:records) { def [](source) = records[source] }.new({}), [entry], @dir)
     expect(verdicts.decide(entry, [])).to be_nil
