@@ -214,13 +214,23 @@ module Relspec
 
       # The entries an earlier run built and kept, reused by this one:
       # [built, kept]. A package built by another backend (a host build
-      # after sbuild ones) is not what this run would build: built again;
-      # a keep counts only while the cutoff is not refused.
+      # after sbuild ones) is not what this run would build: built again.
+      # A keep counts only while the cutoff is not refused and nothing of
+      # its closure is built in this run: a keep was decided on its
+      # closure's builds, and the same .dsc can name a version that was
+      # only planned then (the kept one's) and is built now.
       def earlier(results, plan, digests, backend, refused)
         return [[], []] if @rebuild || results.backend != backend.name
 
-        done = ->(check) { plan.entries.select { |entry| results.public_send(check, entry.source, entry.version, digests[entry.source]) } }
-        [done.call(:built?), refused ? [] : done.call(:kept?)]
+        same = ->(check, entry) { results.public_send(check, entry.source, entry.version, digests[entry.source]) }
+        built = plan.entries.select { |entry| same.call(:built?, entry) }
+        done = built.to_h { |entry| [entry.source, true] }
+        by_source = plan.entries.to_h { |entry| [entry.source, entry] }
+        kept = plan.entries.select do |entry| # dependencies first
+          !refused && same.call(:kept?, entry) && BuildPlan.closure(by_source, entry.source).all? { |need| done[need] } &&
+            (done[entry.source] = true)
+        end
+        [built, kept]
       end
 
       # The Scheduler over the plan: a candidate the early cutoff keeps is

@@ -74,7 +74,7 @@ module Relspec
         page, logs = Report.of(resolution, Project.of_spec(path), locked.lock, builds)
         Report.check(logs, File.join(repository, REPORT_DIR), "html")
         results = results_of(builds.select { |build| selected.include?(build.target) }, tree, explicit: !target.nil?)
-        locked = KeptBuilds.new(locked, results, Project.of_spec(path))
+        locked = KeptBuilds.new(locked, results, builds.to_h { |build| [build.target, build.plan] }, Project.of_spec(path))
         result = include_and_render(locked, results, effective, repository, all, waiting: waiting)
         result.report = Report.write(page, logs, File.join(repository, REPORT_DIR), "html")
         result

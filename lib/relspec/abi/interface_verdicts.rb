@@ -124,8 +124,8 @@ module Relspec
       # interface was compared against, or the version it was kept at.
       def evidence(closure)
         closure.map do |source|
-          kept = @lock.synchronize { @cutoffs[source] }
-          next "#{source} kept at #{kept.keeps}" if kept&.keep?
+          kept = kept_at(source)
+          next "#{source} kept at #{kept}" if kept
 
           found = interface(source)
           "#{source}: #{found.compared} files compared with #{found.against}, unchanged"
@@ -144,12 +144,26 @@ module Relspec
       end
 
       def unchanged?(source)
-        @lock.synchronize { @cutoffs[source]&.keep? } || !!interface(source)&.unchanged?
+        !kept_at(source).nil? || !!interface(source)&.unchanged?
       end
 
+      # The version +source+ is kept at: by this run, or by an earlier one
+      # at its planned version when this run neither decides nor builds it
+      # (the run reuses that keep), else nil.
+      def kept_at(source)
+        decided, built = @lock.synchronize { [@cutoffs[source], @verdicts.key?(source)] }
+        return decided.keep? ? decided.keeps : nil if decided
+        return nil if built
+
+        previous = @previous[source]
+        previous&.kept? && previous.version == @entries[source]&.version ? previous.cutoff.keeps : nil
+      end
+
+      # The verdict of +source+'s build in this run (nil: nothing compared),
+      # else the one an earlier run recorded at its planned version.
       def interface(source)
-        found = @lock.synchronize { @verdicts[source] }
-        return found if found
+        built, found = @lock.synchronize { [@verdicts.key?(source), @verdicts[source]] }
+        return found if built
 
         previous = @previous[source]
         previous&.version == @entries[source]&.version ? previous&.interface : nil

@@ -24,7 +24,7 @@ module Relspec
       FILE = OutputTree::PLAN_FILE
       ROOT_KEYS = %w[release target builds].freeze
       BUILD_KEYS = %w[package source version dsc build_depends cutoff].freeze
-      CUTOFF_KEYS = %w[keeps because].freeze
+      CUTOFF_KEYS = %w[keeps because debian_digest].freeze
       HINT = "plan.yml is written by `relspec compile`: run it again"
 
       # +cutoff+: a Cutoff when the plan names the build an early cutoff
@@ -36,11 +36,13 @@ module Relspec
         end
       end
 
-      # The published version a candidate keeps (+keeps+) and the sources
-      # whose new builds moved it (+because+), docs/abi.md.
-      Cutoff = Struct.new(:keeps, :because, keyword_init: true) do
+      # The published version a candidate keeps (+keeps+), the sources
+      # whose new builds moved it (+because+) and the digest of its debian/
+      # once kept with its candidate dependencies (+debian_digest+,
+      # Plan::CutoffCandidate; nil in plans written before it), docs/abi.md.
+      Cutoff = Struct.new(:keeps, :because, :debian_digest, keyword_init: true) do
         def to_h
-          { "keeps" => keeps, "because" => because }
+          { "keeps" => keeps, "because" => because, "debian_digest" => debian_digest }.compact
         end
       end
 
@@ -149,7 +151,10 @@ module Relspec
             unless needs.include?(source)
           source
         end
-        Cutoff.new(keeps: keeps, because: because.freeze).freeze
+        digest = data["debian_digest"].nil? ? nil : @fields.text(data, path + ["debian_digest"])
+        @fields.fail_at(path + ["debian_digest"], "debian_digest must be 64 lowercase hex digits") \
+          unless digest.nil? || digest.match?(/\A[0-9a-f]{64}\z/)
+        Cutoff.new(keeps: keeps, because: because.freeze, debian_digest: digest).freeze
       end
     end
   end

@@ -133,16 +133,17 @@ module Relspec
       end
 
       # This lock once publish has put each of +outcomes+ into the
-      # release's repository ([target, package, version, kept]: the
-      # version built, kept the early cutoff's Cutoff when it kept the
-      # published version instead, else nil): the builds' history moves to
-      # them (a candidate's did not at compile time), and a kept package's
-      # decision becomes "published" at the version kept, which its history
-      # now vouches for with the debian/ compile settled (docs/abi.md).
-      # Outcomes of another version than the locked build are left alone.
+      # release's repository ([target, package, version, kept, kept
+      # digest]: the version built; kept the early cutoff's Cutoff when it
+      # kept the published version instead, else nil; for a keep, the digest
+      # of the debian/ its history now vouches the kept version for, nil
+      # when none is known): the builds' history moves to them (a
+      # candidate's did not at compile time), and a kept package's decision
+      # becomes "published" at the version kept (docs/abi.md). Outcomes of
+      # another version than the locked build are left alone.
       def published(outcomes)
         entries = targets.transform_values(&:dup)
-        builds = outcomes.filter_map do |target, package, built, kept|
+        builds = outcomes.filter_map do |target, package, built, kept, kept_digest|
           entry = entries.dig(target.to_s, package)
           next unless entry&.decision == "build" && entry.version == built
 
@@ -150,9 +151,11 @@ module Relspec
           if kept
             entries[target.to_s][package] = Entry.new(decision: "published", deb: entry.deb, version: version.to_s,
                                                       from: entry.from, causes: entry.causes, depends: entry.depends,
-                                                      debian_digest: entry.debian_digest, kept: kept.summary).freeze
+                                                      debian_digest: kept_digest || entry.debian_digest, kept: kept.summary).freeze
           end
-          [target, package, version, entry.debian_digest, kept&.summary]
+          next if kept && !kept_digest # its next plan builds it again: safe
+
+          [target, package, version, kept ? kept_digest : entry.debian_digest, kept&.summary]
         end
         Lock.new(release: release, spec_digest: spec_digest, ancestors: ancestors, packages: packages, targets: entries,
                  history: history.with_all(builds), warnings: warnings, notes: notes)

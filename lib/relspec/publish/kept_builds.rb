@@ -13,11 +13,13 @@ module Relspec
     # the LockedRelease it wraps (#lock, #inventory).
     class KeptBuilds
       # +locked+: LockedRelease; +results+: target => Builder::BuildResults
-      # at the planned versions (nil: not built); +project+: the Project
-      # the lock and the osdeps files are written into.
-      def initialize(locked, results, project)
+      # at the planned versions (nil: not built); +plans+: target =>
+      # Builder::BuildPlan they were built from; +project+: the Project the
+      # lock is written into.
+      def initialize(locked, results, plans, project)
         @locked = locked
         @results = results
+        @plans = plans
         @project = project
       end
 
@@ -59,12 +61,28 @@ module Relspec
         outcomes = @results.flat_map do |target, read|
           next [] unless read
 
-          read.entries.select { |record| record.built? || record.kept? }
-              .map { |record| [target, record.package, record.version, record.kept? ? record.cutoff : nil] }
+          entries = @plans.fetch(target).entries.to_h { |entry| [entry.source, entry] }
+          read.entries.select { |record| record.built? || record.kept? }.map do |record|
+            kept = record.kept? ? record.cutoff : nil
+            [target, record.package, record.version, kept, kept && kept_digest(entries, read, record.source)]
+          end
         end
         lock = @locked.lock.published(outcomes)
         Plan::LockGenerator.write(@project.lock_path(effective.release), lock)
         Written.new(lock, @locked.inventory)
+      end
+
+      # The digest of the kept +source+'s debian/ that its history vouches
+      # the kept version for: the plan's, made with its dependencies that
+      # are candidates at the versions they keep, which holds when they
+      # were all kept (one built after all names its new version: none,
+      # and the next plan builds it again).
+      def kept_digest(entries, read, source)
+        entry = entries[source]
+        return nil unless entry&.cutoff
+
+        assumed = entry.build_depends.all? { |need| entries[need]&.cutoff.nil? || read[need]&.kept? }
+        assumed ? entry.cutoff.debian_digest : nil
       end
 
       # The lock publish wrote, read as a LockedRelease.

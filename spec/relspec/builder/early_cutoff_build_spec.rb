@@ -108,7 +108,9 @@ RSpec.describe "the early cutoff on a published release", order: :defined do
     end
     user_first = @first_user["version"]
     lib = @release.source("base/lib")
-    expect(entry["cutoff"]).to eq("keeps" => user_first, "because" => [lib])
+    # no dependency of base/user is a candidate: kept, its debian/ is the one planned
+    expect(entry["cutoff"]).to eq("keeps" => user_first, "because" => [lib],
+                                  "debian_digest" => lock["targets"]["bookworm/amd64"]["base/user"]["debian_digest"])
     user = record("base/user")
     expect(user).to include("status" => "kept", "version" => entry["version"])
     expect(user["files"]).to eq(@first_user["files"]) # the kept build's: the next build is compared with them
@@ -136,7 +138,12 @@ RSpec.describe "the early cutoff on a published release", order: :defined do
     # what publish wrote of base/user is what a plan makes now (base/lib's decision moves from build to published)
     planned = JSON.parse(run!("plan", "specs/ec.yml", "--format", "json").stdout)
     expect(planned["targets"]["bookworm/amd64"]["base/user"]).to eq(lock["targets"]["bookworm/amd64"]["base/user"])
-    expect(planned["history"]["bookworm/amd64"]["base/user"]).to eq(lock["history"]["bookworm/amd64"]["base/user"])
+    %w[base/user base/app].each do |package|
+      expect(planned["history"]["bookworm/amd64"][package]).to eq(lock["history"]["bookworm/amd64"][package])
+    end
+    # base/app's history vouches for its kept version with base/user at the version base/user keeps
+    expect(planned["targets"]["bookworm/amd64"]["base/app"]).to eq(lock["targets"]["bookworm/amd64"]["base/app"])
+    expect(lock["targets"]["bookworm/amd64"]["base/app"]).to include("decision" => "published", "version" => @first_app["version"])
     user_lock = lock["targets"]["bookworm/amd64"]["base/user"]
     expect(user_lock).to include("decision" => "published", "version" => user_first)
     expect(user_lock["kept"]).to start_with("the interface of #{lib} did not change (#{lib}: ")

@@ -98,6 +98,30 @@ RSpec.describe Relspec::Abi::InterfaceVerdicts, :tmpdir do
       .to eq("keeps" => "1-1", "verdict" => "rebuild", "reason" => "--rebuild-dependents: every candidate is built")
   end
 
+  # A run resumed after mid was kept: mid's keep of the earlier run, at
+  # its planned version, counts for top as a keep of this run would.
+  it "counts a keep an earlier run made at the planned version" do
+    lib = plan_entry("lib", "1-2")
+    mid = plan_entry("mid", "1-2", needs: ["lib"], cutoff: Relspec::Builder::BuildPlan::Cutoff.new(keeps: "1-1", because: ["lib"]))
+    top = plan_entry("top", "1-2", needs: ["mid"], cutoff: Relspec::Builder::BuildPlan::Cutoff.new(keeps: "1-1", because: ["mid"]))
+    interface = results::Interface.new(against: "1-1", verdict: "unchanged", compared: 2, changes: [])
+    keep = results::Cutoff.new(keeps: "1-1", verdict: "keep", reason: "r", evidence: [])
+    previous = { "lib" => results::Record.new(source: "lib", package: "base/lib", version: "1-2", status: "built", files: [],
+                                              interface: interface),
+                 "mid" => results::Record.new(source: "mid", package: "base/mid", version: "1-2", status: "kept", files: [],
+                                              cutoff: keep) }
+    verdicts = described_class.new(previous, @dir, entries: [lib, mid, top])
+    expect(verdicts.keep(top).to_h).to include("verdict" => "keep", "evidence" => ["lib: 2 files compared with 1-1, unchanged",
+                                                                                  "mid kept at 1-1"])
+    stale = previous.merge("mid" => results::Record.new(**previous["mid"].to_h.slice("package", "status").transform_keys(&:to_sym),
+                                                        source: "mid", version: "1-1", files: [], cutoff: keep))
+    expect(described_class.new(stale, @dir, entries: [lib, mid, top]).keep(top).verdict).to eq("rebuild") # another version
+    # mid built in this run (its version was only planned when the keep was made): that keep no longer counts
+    rebuilt = described_class.new(previous, @dir, entries: [lib, mid, top])
+    rebuilt.decide(plan_entry("mid", "1-2", needs: ["lib"]), [])
+    expect(rebuilt.keep(top).to_h).to include("verdict" => "rebuild", "reason" => "mid has no verdict to go by")
+  end
+
   it "rebuilds a candidate whose closure holds a changed interface, also two steps down" do
     verdicts = run_with("changed")
     expect(verdicts.cutoff("mid").to_h).to eq("keeps" => "1-1", "verdict" => "rebuild", "reason" => "the interface of lib changed")

@@ -5,6 +5,7 @@ require "tmpdir"
 require "relspec/publish/kept_builds"
 require "relspec/publish/locked_release"
 require "relspec/builder/build_results"
+require "relspec/builder/build_plan"
 require "relspec/plan/lock_parser"
 require "relspec/plan/inventory"
 require "relspec/project"
@@ -40,8 +41,22 @@ RSpec.describe Relspec::Publish::KeptBuilds do
     Relspec::Plan::OwnRepository.new(version ? { target => { "rock-r-base-user" => index_entry.new(version) } } : {})
   end
 
-  def kept_builds(dir)
-    described_class.new(Relspec::Publish::LockedRelease.new(lock, nil), { target => results }, Relspec::Project.new(dir))
+  # base/user kept, its dependency base/lib built (no candidate): the
+  # kept digest of plan.yml holds
+  let(:plan) do
+    Relspec::Builder::BuildPlan.parse(<<~YAML, dir: "out/r/bookworm-amd64")
+      release: r
+      target: bookworm/amd64
+      builds:
+        - { package: base/lib, source: rock-r-base-lib, version: 1.0-2~bookworm, dsc: a.dsc, build_depends: [] }
+        - { package: base/user, source: rock-r-base-user, version: 1.0-2~bookworm, dsc: b.dsc, build_depends: [rock-r-base-lib],
+            cutoff: { keeps: 1.0-1~bookworm, because: [rock-r-base-lib], debian_digest: #{'d' * 64} } }
+    YAML
+  end
+
+  def kept_builds(dir, read = results)
+    described_class.new(Relspec::Publish::LockedRelease.new(lock, nil), { target => read }, { target => plan },
+                        Relspec::Project.new(dir))
   end
 
   it "refuses a keep whose version the repository does not hold, before anything is published" do
@@ -53,8 +68,7 @@ RSpec.describe Relspec::Publish::KeptBuilds do
                                                "but the repository holds no version of it; build it: relspec build --rebuild-dependents")
       expect { kept.check { own("1.0-0~bookworm") } }.to raise_error(Relspec::PublishError, /holds 1\.0-0~bookworm;/)
       # nothing kept: the repository is not even read
-      expect { described_class.new(Relspec::Publish::LockedRelease.new(lock, nil), { target => nil }, Relspec::Project.new(dir)).check { raise "read" } }
-        .not_to raise_error
+      expect { kept_builds(dir, nil).check { raise "read" } }.not_to raise_error
     end
   end
 
@@ -64,9 +78,25 @@ RSpec.describe Relspec::Publish::KeptBuilds do
       read = Relspec::Plan::LockParser.read(File.join(dir, "releases", "r", "lock.yml"), release: "r")
       entry = read.targets["bookworm/amd64"]["base/user"]
       expect([entry.decision, entry.version, entry.kept]).to eq(["published", "1.0-1~bookworm", "the interface of lib did not change"])
-      expect(read.history.build(target, "base/user", "1.0").to_h).to eq(revision: 1, debian_digest: "b" * 64,
+      expect(read.history.build(target, "base/user", "1.0").to_h).to eq(revision: 1, debian_digest: "d" * 64,
                                                                         kept: "the interface of lib did not change")
       expect(written.lock.to_h).to eq(read.to_h)
+    end
+  end
+
+  it "vouches for no digest when a dependency the kept digest took as kept was built after all" do
+    revoked = plan.entries.map do |entry|
+      next entry unless entry.package == "base/lib"
+
+      Relspec::Builder::BuildPlan::Entry.new(**entry.to_h.transform_keys(&:to_sym).except(:cutoff),
+                                             cutoff: Relspec::Builder::BuildPlan::Cutoff.new(keeps: "1.0-1~bookworm", because: []))
+    end
+    entries = revoked.to_h { |entry| [entry.source, entry] }
+    Dir.mktmpdir do |dir|
+      kept = kept_builds(dir)
+      expect(kept.kept_digest(plan.entries.to_h { |entry| [entry.source, entry] }, results, "rock-r-base-user")).to eq("d" * 64)
+      # rock-r-base-lib has no record here: not kept
+      expect(kept.kept_digest(entries, results, "rock-r-base-user")).to be_nil
     end
   end
 end
