@@ -112,7 +112,7 @@ RSpec.describe Relspec::Abi::InterfaceVerdicts, :tmpdir do
                                               cutoff: keep) }
     verdicts = described_class.new(previous, @dir, entries: [lib, mid, top])
     expect(verdicts.keep(top).to_h).to include("verdict" => "keep", "evidence" => ["lib: 2 files compared with 1-1, unchanged",
-                                                                                  "mid kept at 1-1"])
+                                                                                   "mid kept at 1-1"])
     stale = previous.merge("mid" => results::Record.new(**previous["mid"].to_h.slice("package", "status").transform_keys(&:to_sym),
                                                         source: "mid", version: "1-1", files: [], cutoff: keep))
     expect(described_class.new(stale, @dir, entries: [lib, mid, top]).keep(top).verdict).to eq("rebuild") # another version
