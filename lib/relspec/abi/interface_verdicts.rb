@@ -66,14 +66,13 @@ module Relspec
         @lock.synchronize { @cutoffs[entry.source] = cutoff }
       end
 
-      # +source+, kept in this run, is built after all (a dependent built
-      # now names its new version): +reason+ replaces the keep.
+      # +source+, kept in this run or an earlier one, is built after all (a
+      # dependent built now names its new version): +reason+ replaces the
+      # keep.
       def revoke(source, reason)
-        @lock.synchronize do
-          kept = @cutoffs[source]
-          @cutoffs[source] = Builder::BuildResults::Cutoff.new(keeps: kept.keeps, verdict: "rebuild", reason: reason,
-                                                               evidence: [].freeze).freeze
-        end
+        cutoff = Builder::BuildResults::Cutoff.new(keeps: @entries.fetch(source).cutoff.keeps, verdict: "rebuild",
+                                                   reason: reason, evidence: [].freeze).freeze
+        @lock.synchronize { @cutoffs[source] = cutoff }
       end
 
       # The verdict decided for +source+ in this run, or nil.

@@ -93,6 +93,10 @@ RSpec.describe Relspec::Abi::InterfaceVerdicts, :tmpdir do
     expect(verdicts.cutoff("mid").to_h).to eq("keeps" => "1-1", "verdict" => "rebuild", "reason" => "built after all: top is built")
     verdicts.decide(mid, []) # the build that follows keeps the revoked decision
     expect(verdicts.cutoff("mid").reason).to eq("built after all: top is built")
+    # a keep of an earlier run (none decided in this one) is revoked the same way
+    earlier = run_with("unchanged", decide: false)
+    earlier.revoke("top", "built after all: app is built")
+    expect(earlier.cutoff("top").to_h).to eq("keeps" => "1-1", "verdict" => "rebuild", "reason" => "built after all: app is built")
     refused = run_with("unchanged", decide: false, refused: "--rebuild-dependents: every candidate is built")
     expect(refused.keep(refused.instance_variable_get(:@entries)["mid"]).to_h)
       .to eq("keeps" => "1-1", "verdict" => "rebuild", "reason" => "--rebuild-dependents: every candidate is built")
