@@ -12,6 +12,7 @@ require_relative "builder/request"
 require_relative "builder/target_lock"
 require_relative "builder/repositories"
 require_relative "builder/scheduler"
+require_relative "builder/early_cutoff"
 require_relative "builder/tool"
 require_relative "builder/unlinked_path"
 require_relative "builder/staged_results"
@@ -35,7 +36,7 @@ module Relspec
     # Per target: +reused+ counts packages an earlier run built (files checked).
     TargetReport = Struct.new(:target, :dir, :results, :outcomes, :reused, :prepared, keyword_init: true) do
       def failed?
-        outcomes.any? { |outcome| outcome.status != :built }
+        outcomes.any? { |outcome| !Scheduler::SUCCESSES.include?(outcome.status) }
       end
     end
 
@@ -48,13 +49,15 @@ module Relspec
     # the one it replaces, called with (results, plan entries, target
     # folder) per target (the early cutoff's Abi::InterfaceVerdicts.of,
     # which the CLI hands in: abi/ reads builds, so builder/ does not
-    # require it); none by default.
+    # require it); none by default. +rebuild_dependents+: the early cutoff
+    # keeps nothing in this run (every candidate is built).
     def self.run(path, out:, backend: "sbuild", jobs: 1, targets: nil, keep_going: false, rebuild: false,
                  prepare_only: false, listener: nil, engine: "local", slurm_settings: nil, notices: nil,
-                 verdicts: NoVerdicts.method(:of))
+                 verdicts: NoVerdicts.method(:of), rebuild_dependents: false)
       Run.new(path, out: out, backend: backend, jobs: jobs, targets: targets, keep_going: keep_going,
                     rebuild: rebuild, prepare_only: prepare_only, listener: listener,
-                    engine: engine, slurm_settings: slurm_settings, notices: notices, verdicts: verdicts).call
+                    engine: engine, slurm_settings: slurm_settings, notices: notices, verdicts: verdicts,
+                    rebuild_dependents: rebuild_dependents).call
     end
 
     # A run that judges no build: no interface verdict, no cutoff.
@@ -67,6 +70,10 @@ module Relspec
 
       def decide(*); end
 
+      def keep(_entry); end
+
+      def revoke(*); end
+
       def [](_source); end
 
       def cutoff(_source); end
@@ -75,7 +82,8 @@ module Relspec
     # One `relspec build` run.
     class Run
       def initialize(path, out:, backend:, jobs:, targets:, keep_going:, rebuild:, prepare_only:, listener:,
-                     engine: "local", slurm_settings: nil, notices: nil, verdicts: NoVerdicts.method(:of))
+                     engine: "local", slurm_settings: nil, notices: nil, verdicts: NoVerdicts.method(:of),
+                     rebuild_dependents: false)
         raise InvalidOption, "unknown engine #{engine.inspect} (known: #{ENGINES.join(', ')})" unless ENGINES.include?(engine)
 
         @engine = engine
@@ -92,6 +100,7 @@ module Relspec
         @listener = listener
         @tool = Tool.new
         @verdicts = verdicts
+        @rebuild_dependents = rebuild_dependents
       end
 
       def call
@@ -157,21 +166,17 @@ module Relspec
         # (a narrowed selection widened again builds nothing twice).
         results = BuildResults.load(dir, release: @effective.release, target: target)
         digests = dsc_digests(plan)
-        # A package built by another backend (a host build after sbuild ones)
-        # is not what this run would build: built again.
-        reuse = !@rebuild && results.backend == backend.name
-        done = reuse ? plan.entries.select { |entry| results.built?(entry.source, entry.version, digests[entry.source]) } : []
-        done = done.map(&:source)
+        refused = refusal
+        built, kept = earlier(results, plan, digests, backend, refused)
+        done = (built + kept).map(&:source)
         @listener&.start(target, plan.entries.size, done.size)
         local = Mutex.new
-        debs = done.flat_map { |source| debs_of(dir, results[source]) }
-        verdicts = @verdicts.call(results, plan.entries, dir)
+        debs = built.flat_map { |entry| debs_of(dir, results[entry.source]) }
+        verdicts = @verdicts.call(results, plan.entries, dir, refused: refused)
+        cutoff = EarlyCutoff.new(verdicts, plan.entries, kept: kept.map(&:source))
         on_start = ->(entry) { @listener&.building(entry) }
-        on_done = lambda do |outcome|
-          record(results, dir, outcome, digests[outcome.entry.source], verdicts)
-          results.write(backend: backend.name)
-          @listener&.finished(outcome)
-        end
+        revoked = {}
+        on_done = recorder(results, dir, digests, verdicts, cutoff, revoked, backend)
         outcomes = if slurm?
                      Slurm::Engine.new(cluster: Slurm::Cluster.new, settings: @slurm_settings, backend: backend,
                                        notices: @notices)
@@ -179,17 +184,65 @@ module Relspec
                                        done_debs: debs, keep_going: @keep_going, rebuild: @rebuild,
                                        on_start: on_start, on_done: on_done)
                    else
-                     Scheduler.new(plan.entries, jobs: @jobs, keep_going: @keep_going, done: done)
-                              .run(on_start: on_start, on_done: on_done) do |entry|
-                       built = build_one(plan, entry, target, repositories, dir, backend, local.synchronize { debs.dup },
+                     build = lambda do |one|
+                       files = build_one(plan, one, target, repositories, dir, backend, local.synchronize { debs.dup },
                                          verdicts)
-                       local.synchronize { debs.concat(built.grep(/\.u?deb\z/)) }
-                       built
+                       local.synchronize { debs.concat(files.grep(/\.u?deb\z/)) }
+                       files
                      end
+                     run_local(plan, done, cutoff, on_start, on_done, build)
                    end
         results.write(backend: backend.name) if outcomes.empty?
+        # a kept package built after all counts as built (or failed)
         TargetReport.new(target: target, dir: dir, results: results.within(plan.entries.map(&:source)),
-                         outcomes: outcomes, reused: done.size, prepared: prepared)
+                         outcomes: outcomes.map { |outcome| revoked.fetch(outcome.entry.source, outcome) }, reused: done.size, prepared: prepared)
+      end
+
+      # What the run does as each build ends: records it (and the kept
+      # builds built after all before it, into +revoked+), writes the
+      # results, tells the listener.
+      def recorder(results, dir, digests, verdicts, cutoff, revoked, backend)
+        lambda do |outcome|
+          [*cutoff.drain, outcome].each do |each|
+            revoked[each.entry.source] = each unless each.equal?(outcome)
+            record(results, dir, each, digests[each.entry.source], verdicts)
+          end
+          results.write(backend: backend.name)
+          @listener&.finished(outcome)
+        end
+      end
+
+      # The entries an earlier run built and kept, reused by this one:
+      # [built, kept]. A package built by another backend (a host build
+      # after sbuild ones) is not what this run would build: built again.
+      # A keep counts only while the cutoff is not refused and nothing of
+      # its closure is built in this run: a keep was decided on its
+      # closure's builds, and the same .dsc can name a version that was
+      # only planned then (the kept one's) and is built now.
+      def earlier(results, plan, digests, backend, refused)
+        return [[], []] if @rebuild || results.backend != backend.name
+
+        same = ->(check, entry) { results.public_send(check, entry.source, entry.version, digests[entry.source]) }
+        built = plan.entries.select { |entry| same.call(:built?, entry) }
+        done = built.to_h { |entry| [entry.source, true] }
+        by_source = plan.entries.to_h { |entry| [entry.source, entry] }
+        kept = plan.entries.select do |entry| # dependencies first
+          !refused && same.call(:kept?, entry) && BuildPlan.closure(by_source, entry.source).all? { |need| done[need] } &&
+            (done[entry.source] = true)
+        end
+        [built, kept]
+      end
+
+      # The Scheduler over the plan: a candidate the early cutoff keeps is
+      # not built; a kept one a build needs is built first (EarlyCutoff).
+      def run_local(plan, done, cutoff, on_start, on_done, build)
+        Scheduler.new(plan.entries, jobs: @jobs, keep_going: @keep_going, done: done)
+                 .run(on_start: on_start, on_done: on_done) do |entry|
+          next Scheduler::Done.new(status: :kept, value: []) if cutoff.keep?(entry)
+
+          cutoff.build_kept_for(entry, &build)
+          build.call(entry)
+        end
       end
 
       # The SHA256 of each planned .dsc: a record counts only for the exact
@@ -224,19 +277,40 @@ module Relspec
                     target: target, repositories: repositories, local_debs: debs, output_dir: output_dir, log: log)
       end
 
+      # Why the early cutoff keeps nothing in this run, or nil: the
+      # spec's early_cutoff, --rebuild-dependents, the Slurm engine (its
+      # jobs keep no ABI dumps, so no verdict exists to keep by;
+      # docs/scale-out.md).
+      def refusal
+        return "--rebuild-dependents: every candidate is built" if @rebuild_dependents
+        return "not decided on Slurm: its builds keep no ABI dumps" if slurm?
+
+        setting = @effective.early_cutoff
+        setting.enabled ? nil : "the early cutoff is off for #{@effective.release}: #{setting.reason}"
+      end
+
       # +verdicts+: the run's verdicts (Abi::InterfaceVerdicts or NoVerdicts).
       def record(results, dir, outcome, dsc_sha256, verdicts)
         entry = outcome.entry
-        started = outcome.status != :skipped
+        started = !%i[skipped kept].include?(outcome.status)
+        decided = Scheduler::SUCCESSES.include?(outcome.status)
         files = outcome.status == :built ? outcome.value.map { |file| BuildResults::Produced.of(dir, relative(dir, file)) } : []
+        cutoff = decided ? verdicts.cutoff(entry.source) || verdicts.keep(entry) : nil # a Slurm build is decided now
+        files = kept_files(results[entry.source], cutoff) if outcome.status == :kept
         results.record(BuildResults::Record.new(
                          source: entry.source, package: entry.package, version: entry.version, dsc_sha256: dsc_sha256,
                          status: outcome.status.to_s,
                          duration: started ? outcome.duration : nil, log: started ? OutputTree.log_name(entry.source) : nil,
                          reason: outcome.reason&.gsub("#{dir}/", ""), files: files.freeze,
-                         interface: outcome.status == :built ? verdicts[entry.source] : nil,
-                         cutoff: outcome.status == :built ? verdicts.cutoff(entry.source) : nil
+                         interface: outcome.status == :built ? verdicts[entry.source] : nil, cutoff: cutoff
                        ))
+      end
+
+      # The files of the build a keep keeps, as the record it replaces
+      # lists them when that build is the one kept (else none): the next
+      # build of the package is compared with them (docs/abi.md).
+      def kept_files(previous, cutoff)
+        previous && (previous.built? || previous.kept?) && previous.files_version == cutoff.keeps ? previous.files : []
       end
 
       # The ABI dumps of the libraries the build's .debs ship, beside them

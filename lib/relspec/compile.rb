@@ -147,7 +147,8 @@ module Relspec
       return nil unless decision.cutoff
 
       Builder::BuildPlan::Cutoff.new(keeps: decision.cutoff.keeps.to_s,
-                                     because: decision.cutoff.because.map { |name| built.fetch(name).deb_name })
+                                     because: decision.cutoff.because.map { |name| built.fetch(name).deb_name },
+                                     debian_digest: decision.cutoff.debian_digest)
     end
 
     # <out>/<release>/<codename>-<arch>/plan.yml: the builds in dependency

@@ -21,6 +21,7 @@ require_relative "publish/pool_guard"
 require_relative "reprepro/runner"
 require_relative "publish/signing_key"
 require_relative "publish/locked_release"
+require_relative "publish/kept_builds"
 require_relative "publish/held_packages"
 require_relative "report"
 require_relative "abi/published_dumps"
@@ -73,6 +74,7 @@ module Relspec
         page, logs = Report.of(resolution, Project.of_spec(path), locked.lock, builds)
         Report.check(logs, File.join(repository, REPORT_DIR), "html")
         results = results_of(builds.select { |build| selected.include?(build.target) }, tree, explicit: !target.nil?)
+        locked = KeptBuilds.new(locked, results, builds.to_h { |build| [build.target, build.plan] }, Project.of_spec(path))
         result = include_and_render(locked, results, effective, repository, all, waiting: waiting)
         result.report = Report.write(page, logs, File.join(repository, REPORT_DIR), "html")
         result
@@ -106,10 +108,12 @@ module Relspec
         # read before anything is published: a damaged index is made again
         # here, never found after the packages are in
         dumps, rebuilt = published_dumps(repository, results, effective.release)
+        locked.check { open_own(effective, repository) } # a kept version the repository lost is refused before any include
         stale_lock, recovered, targets = transaction(repository, waiting: waiting) do |dirs, recovered_now|
           include_targets(repository, dirs, config, results, uploads, export: recovered_now == :abandoned)
         end
         write_abi_dumps(repository, results, dumps)
+        locked = locked.record(effective)
         written, missing = write_osdeps(locked, effective, repository)
         Result.new(release: effective.release, repository: repository, targets: targets, osdeps_written: written,
                    osdeps_missing: missing, stale_lock: stale_lock, recovered: recovered,
@@ -201,7 +205,8 @@ module Relspec
         debs = uploads[target].flat_map(&:debs)
         reprepro.includedeb(target.codename, debs) unless debs.empty?
         TargetResult.new(target: target, results_path: read&.path, published: fresh.map(&:source), held: held.map(&:source),
-                         left_out: read ? read.entries.reject(&:built?) : [], built: !read.nil?)
+                         left_out: read ? read.entries.reject { |record| record.built? || record.kept? } : [],
+                         built: !read.nil?)
       end
       # A new or changed configuration reaches dists/ (distributions without
       # packages, a new signing key) only by an export.
@@ -243,14 +248,17 @@ module Relspec
     # repository (read as it is now, after the includes) or the ancestors
     # really hold.
     def self.write_osdeps(locked, effective, repository)
-      entry = effective.repository
-      reader = Apt::Opening.repository(entry, repository)
-      own = Plan::OwnRepository.read(reader, Target.all(effective))
-      listing = HeldPackages.list(locked.lock, own: own, inventory: locked.inventory)
+      listing = HeldPackages.list(locked.lock, own: open_own(effective, repository), inventory: locked.inventory)
       written = Osdeps::Files.write_release(listing.targets, effective, File.join(repository, OSDEPS_DIR))
       [written.changed_count, listing.missing]
     end
-    private_class_method :check_links, :uploads, :transaction, :repository_path, :results_of, :include_targets,
+
+    # What the release's repository holds now (Plan::OwnRepository).
+    def self.open_own(effective, repository)
+      Plan::OwnRepository.read(Apt::Opening.repository(effective.repository, repository), Target.all(effective))
+    end
+
+    private_class_method :open_own, :check_links, :uploads, :transaction, :repository_path, :results_of, :include_targets,
                          :write_osdeps,
                          :write_abi_dumps
   end

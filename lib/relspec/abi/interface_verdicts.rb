@@ -3,6 +3,7 @@
 require "fileutils"
 require "tmpdir"
 require_relative "../builder/build_results"
+require_relative "../builder/build_plan"
 require_relative "interface_check"
 require_relative "comparison"
 
@@ -18,16 +19,19 @@ module Relspec
     class InterfaceVerdicts
       # The verdicts of a run building +entries+ (plan entries) over
       # +results+ (BuildResults, as the run found them) in +dir+.
-      def self.of(results, entries, dir)
-        new(entries.to_h { |entry| [entry.source, results[entry.source]] }, dir, entries: entries)
+      # +refused+: why the early cutoff keeps nothing in this run (the
+      # spec's early_cutoff, --rebuild-dependents), or nil.
+      def self.of(results, entries, dir, refused: nil)
+        new(entries.to_h { |entry| [entry.source, results[entry.source]] }, dir, entries: entries, refused: refused)
       end
 
       # +previous+: source => Builder::BuildResults::Record (or nil) before the run;
       # +dir+: the target folder; +compare+: how two dumps are compared;
       # +entries+: the plan's entries (their build_depends give each
       # build's closure, their cutoff the early cutoff's candidates).
-      def initialize(previous, dir, compare: Comparison.method(:compare), entries: [])
+      def initialize(previous, dir, compare: Comparison.method(:compare), entries: [], refused: nil)
         @previous = previous
+        @refused = refused
         @dir = dir
         @check = InterfaceCheck.new(compare: compare)
         @entries = entries.to_h { |entry| [entry.source, entry] }
@@ -43,12 +47,32 @@ module Relspec
       def decide(entry, files)
         previous = @previous[entry.source]
         interface = comparable?(previous, entry) ? interface_of(entry, previous, files) : nil
-        cutoff = entry.cutoff && cutoff_of(entry)
+        cutoff = entry.cutoff && !cutoff(entry.source) ? cutoff_of(entry) : nil # #keep decides it first
         @lock.synchronize do
           @verdicts[entry.source] = interface
-          @cutoffs[entry.source] = cutoff
+          @cutoffs[entry.source] ||= cutoff
         end
         interface
+      end
+
+      # What the early cutoff decides for +entry+ before it is built: the
+      # verdicts of its closure exist once it is ready to build. A
+      # Builder::BuildResults::Cutoff (kept for #cutoff), or nil when
+      # +entry+ is no candidate.
+      def keep(entry)
+        return nil unless entry.cutoff
+
+        cutoff = @refused ? refusal(entry) : cutoff_of(entry)
+        @lock.synchronize { @cutoffs[entry.source] = cutoff }
+      end
+
+      # +source+, kept in this run or an earlier one, is built after all (a
+      # dependent built now names its new version): +reason+ replaces the
+      # keep.
+      def revoke(source, reason)
+        cutoff = Builder::BuildResults::Cutoff.new(keeps: @entries.fetch(source).cutoff.keeps, verdict: "rebuild",
+                                                   reason: reason, evidence: [].freeze).freeze
+        @lock.synchronize { @cutoffs[source] = cutoff }
       end
 
       # The verdict decided for +source+ in this run, or nil.
@@ -63,19 +87,16 @@ module Relspec
       end
 
       # The sources of the plan +source+ needs built first, directly or
-      # through others.
-      def closure(source, seen = {})
-        (@entries[source]&.build_depends || []).each do |need|
-          next if seen[need]
-
-          seen[need] = true
-          closure(need, seen)
-        end
-        seen.keys.sort
+      # through others, in plan order.
+      def closure(source)
+        Builder::BuildPlan.closure(@entries, source)
       end
 
+      # A build of another version, or the kept build a kept record lists,
+      # whose files are all there with the bytes recorded.
       def comparable?(previous, entry)
-        !!previous&.built? && previous.version != entry.version && previous.files.all? { |file| file.intact?(@dir) }
+        !previous.nil? && (previous.built? || previous.kept?) && !previous.files.empty? &&
+          previous.files_version != entry.version && previous.files.all? { |file| file.intact?(@dir) }
       end
 
       private
@@ -86,14 +107,33 @@ module Relspec
       # nothing the candidate builds against changed, also through the
       # headers of a dependency's dependency.
       def cutoff_of(entry)
-        changed = closure(entry.source).find { |source| !unchanged?(source) }
+        closure = closure(entry.source)
+        changed = closure.find { |source| !unchanged?(source) }
         reason = if changed
                    verdict = interface(changed)
                    verdict ? "the interface of #{changed} changed" : "#{changed} has no verdict to go by"
                  else
                    "the interface of #{entry.cutoff.because.join(', ')} did not change"
                  end
-        Builder::BuildResults::Cutoff.new(keeps: entry.cutoff.keeps, verdict: changed ? "rebuild" : "keep", reason: reason).freeze
+        Builder::BuildResults::Cutoff.new(keeps: entry.cutoff.keeps, verdict: changed ? "rebuild" : "keep", reason: reason,
+                                          evidence: changed ? [].freeze : evidence(closure)).freeze
+      end
+
+      # One line per package of a kept candidate's closure: what its
+      # interface was compared against, or the version it was kept at.
+      def evidence(closure)
+        closure.map do |source|
+          kept = kept_at(source)
+          next "#{source} kept at #{kept}" if kept
+
+          found = interface(source)
+          "#{source}: #{found.compared} files compared with #{found.against}, unchanged"
+        end.freeze
+      end
+
+      def refusal(entry)
+        Builder::BuildResults::Cutoff.new(keeps: entry.cutoff.keeps, verdict: "rebuild", reason: @refused,
+                                          evidence: [].freeze).freeze
       end
 
       # A build's side, its .debs unpacked into +root+ (for the headers).
@@ -103,12 +143,26 @@ module Relspec
       end
 
       def unchanged?(source)
-        @lock.synchronize { @cutoffs[source]&.keep? } || !!interface(source)&.unchanged?
+        !kept_at(source).nil? || !!interface(source)&.unchanged?
       end
 
+      # The version +source+ is kept at: by this run, or by an earlier one
+      # at its planned version when this run neither decides nor builds it
+      # (the run reuses that keep), else nil.
+      def kept_at(source)
+        decided, built = @lock.synchronize { [@cutoffs[source], @verdicts.key?(source)] }
+        return decided.keep? ? decided.keeps : nil if decided
+        return nil if built
+
+        previous = @previous[source]
+        previous&.kept? && previous.version == @entries[source]&.version ? previous.cutoff.keeps : nil
+      end
+
+      # The verdict of +source+'s build in this run (nil: nothing compared),
+      # else the one an earlier run recorded at its planned version.
       def interface(source)
-        found = @lock.synchronize { @verdicts[source] }
-        return found if found
+        built, found = @lock.synchronize { [@verdicts.key?(source), @verdicts[source]] }
+        return found if built
 
         previous = @previous[source]
         previous&.version == @entries[source]&.version ? previous&.interface : nil
@@ -116,14 +170,14 @@ module Relspec
 
       def interface_of(entry, previous, files)
         Dir.mktmpdir("relspec-interface") do |work|
-          old = side(previous.version, previous.files.map { |file| File.join(@dir, file.name) }, File.join(work, "old"))
+          old = side(previous.files_version, previous.files.map { |file| File.join(@dir, file.name) }, File.join(work, "old"))
           new = side(entry.version, files, File.join(work, "new"))
           Builder::BuildResults::Interface.of(@check.decide(entry.package, old: old, new: new))
         end
       rescue ToolError => e
         # a comparison that cannot be made proves nothing: the interface
         # counts as changed, and the build that succeeded stays built
-        Builder::BuildResults::Interface.new(against: previous.version, verdict: "changed", compared: 0,
+        Builder::BuildResults::Interface.new(against: previous.files_version, verdict: "changed", compared: 0,
                                              changes: ["not compared: #{e.message}"].freeze).freeze
       end
     end

@@ -24,7 +24,7 @@ module Relspec
       FILE = OutputTree::PLAN_FILE
       ROOT_KEYS = %w[release target builds].freeze
       BUILD_KEYS = %w[package source version dsc build_depends cutoff].freeze
-      CUTOFF_KEYS = %w[keeps because].freeze
+      CUTOFF_KEYS = %w[keeps because debian_digest].freeze
       HINT = "plan.yml is written by `relspec compile`: run it again"
 
       # +cutoff+: a Cutoff when the plan names the build an early cutoff
@@ -36,15 +36,33 @@ module Relspec
         end
       end
 
-      # The published version a candidate keeps (+keeps+) and the sources
-      # whose new builds moved it (+because+), docs/abi.md.
-      Cutoff = Struct.new(:keeps, :because, keyword_init: true) do
+      # The published version a candidate keeps (+keeps+), the sources
+      # whose new builds moved it (+because+) and the digest of its debian/
+      # once kept with its candidate dependencies (+debian_digest+,
+      # Plan::CutoffCandidate; nil in plans written before it), docs/abi.md.
+      Cutoff = Struct.new(:keeps, :because, :debian_digest, keyword_init: true) do
         def to_h
-          { "keeps" => keeps, "because" => because }
+          { "keeps" => keeps, "because" => because, "debian_digest" => debian_digest }.compact
         end
       end
 
       attr_reader :dir, :release, :target, :entries
+
+      # The sources of +entries+ (source => Entry, in plan order) that
+      # +source+ needs built first, directly or through others, in plan
+      # order (dependencies first): what its build installs, and what the
+      # early cutoff goes by (docs/abi.md).
+      def self.closure(entries, source)
+        seen = {}
+        pending = [source]
+        until pending.empty?
+          (entries[pending.pop]&.build_depends || []).each do |need|
+            pending << need unless seen[need]
+            seen[need] = true
+          end
+        end
+        entries.keys.select { |one| seen[one] }
+      end
 
       # Writes +entries+ (Entry) as <dir>/plan.yml when its text changed;
       # true when it did.
@@ -133,7 +151,10 @@ module Relspec
             unless needs.include?(source)
           source
         end
-        Cutoff.new(keeps: keeps, because: because.freeze).freeze
+        digest = data["debian_digest"].nil? ? nil : @fields.text(data, path + ["debian_digest"])
+        @fields.fail_at(path + ["debian_digest"], "debian_digest must be 64 lowercase hex digits") \
+          unless digest.nil? || digest.match?(/\A[0-9a-f]{64}\z/)
+        Cutoff.new(keeps: keeps, because: because.freeze, debian_digest: digest).freeze
       end
     end
   end

@@ -28,14 +28,14 @@ module Relspec
       FORMAT_VERSION = 1
       ROOT_KEYS = [FORMAT_KEY, "release", "target", "backend", "packages"].freeze
       PACKAGE_KEYS = %w[package version dsc_sha256 status duration log reason files interface cutoff].freeze
-      CUTOFF_KEYS = %w[keeps verdict reason].freeze
+      CUTOFF_KEYS = %w[keeps verdict reason evidence].freeze
       CUTOFF_VERDICTS = %w[keep rebuild].freeze
       FILE_KEYS = %w[name sha256 size].freeze
       INTERFACE_KEYS = %w[against verdict compared changes].freeze
       INTERFACE_VERDICTS = %w[unchanged changed].freeze
       # The changes a record keeps of a verdict: the first ones say why.
       INTERFACE_CHANGES = 20
-      STATUSES = %w[built failed skipped published].freeze
+      STATUSES = %w[built kept failed skipped published].freeze
       SHA256 = /\A[0-9a-f]{64}\z/
       HINT = "build-results.yml is written by `relspec build`: delete it and run `relspec build` again for this target"
 
@@ -79,16 +79,24 @@ module Relspec
       end
 
       # What the early cutoff decided for a candidate of the plan
-      # (BuildPlan::Cutoff): "keep" its published version +keeps+ or
-      # "rebuild", with the +reason+. The build still rebuilds it today
-      # (docs/abi.md): the record says what the cutoff would save.
-      Cutoff = Struct.new(:keeps, :verdict, :reason, keyword_init: true) do
+      # (BuildPlan::Cutoff): "keep" its published version +keeps+ (the
+      # record's status is then "kept": not built, the repository's build
+      # stays) or "rebuild", with the +reason+ and, for a keep, the
+      # +evidence+: one line per package of the candidate's closure whose
+      # interface was compared (docs/abi.md).
+      Cutoff = Struct.new(:keeps, :verdict, :reason, :evidence, keyword_init: true) do
         def keep?
           verdict == "keep"
         end
 
+        # The reason with the evidence, on one line (why, report, diff).
+        def summary
+          evidence.nil? || evidence.empty? ? reason : "#{reason} (#{evidence.join('; ')})"
+        end
+
         def to_h
-          { "keeps" => keeps, "verdict" => verdict, "reason" => reason }
+          { "keeps" => keeps, "verdict" => verdict, "reason" => reason,
+            "evidence" => evidence.nil? || evidence.empty? ? nil : evidence }.compact
         end
       end
 
@@ -102,6 +110,18 @@ module Relspec
                           :interface, :cutoff, keyword_init: true) do
         def built?
           status == "built"
+        end
+
+        # Kept by the early cutoff: not built, its published build stays.
+        def kept?
+          status == "kept"
+        end
+
+        # The version of the build whose files the record lists: a kept
+        # record lists the files of the build it keeps (when the target
+        # folder had them), so that the next build is compared with them.
+        def files_version
+          kept? ? cutoff.keeps : version
         end
 
         def to_h
@@ -162,8 +182,15 @@ module Relspec
       # bytes recorded.
       def built?(source, version, dsc_sha256)
         record = @records[source]
-        !!record&.built? && record.version == version && !dsc_sha256.nil? && record.dsc_sha256 == dsc_sha256 &&
+        !!record&.built? && same_source?(record, version, dsc_sha256) &&
           record.files.all? { |file| file.intact?(File.dirname(@path)) }
+      end
+
+      # True when the early cutoff kept +source+ for this +version+ and
+      # .dsc (an earlier run decided it: nothing to build).
+      def kept?(source, version, dsc_sha256)
+        record = @records[source]
+        !!record&.kept? && same_source?(record, version, dsc_sha256)
       end
 
       def record(record)
@@ -188,6 +215,11 @@ module Relspec
         self.class.new(@path, @release, @target, backend: @backend,
                                                  records: @records.values.select { |record| versions[record.source] == record.version })
       end
+
+      def same_source?(record, version, dsc_sha256)
+        record.version == version && !dsc_sha256.nil? && record.dsc_sha256 == dsc_sha256
+      end
+      private :same_source?
 
       def write(backend:)
         @backend = backend
@@ -228,13 +260,16 @@ module Relspec
           fail_at(path + ["status"], "status #{status.inspect} is not one of #{STATUSES.join(', ')}") unless STATUSES.include?(status)
           files = files(fields, path + ["files"])
           fail_at(path + ["files"], "a built package lists the files it produced") if status == "built" && files.empty?
+          cutoff = cutoff(fields, path + ["cutoff"])
+          fail_at(path + ["status"], "a kept package names the early cutoff's keep (cutoff: verdict keep)") \
+            if status == "kept" && !cutoff&.keep?
           Record.new(source: source, package: @fields.text(fields, path + ["package"]),
                      version: version(fields, path + ["version"]), dsc_sha256: dsc_sha256(fields, path + ["dsc_sha256"]),
                      status: status,
                      duration: duration(fields, path + ["duration"]),
                      log: fields["log"].nil? ? nil : @fields.plain_path(fields, path + ["log"]),
                      reason: @fields.optional_text(fields, path + ["reason"]), files: files.freeze,
-                     interface: interface(fields, path + ["interface"]), cutoff: cutoff(fields, path + ["cutoff"])).freeze
+                     interface: interface(fields, path + ["interface"]), cutoff: cutoff).freeze
         end
 
         def cutoff(fields, path)
@@ -246,7 +281,12 @@ module Relspec
           verdict = @fields.text(data, path + ["verdict"])
           fail_at(path + ["verdict"], "verdict #{verdict.inspect} is not one of #{CUTOFF_VERDICTS.join(', ')}") \
             unless CUTOFF_VERDICTS.include?(verdict)
-          Cutoff.new(keeps: version(data, path + ["keeps"]), verdict: verdict, reason: @fields.text(data, path + ["reason"])).freeze
+          evidence = (data["evidence"].nil? ? [] : @fields.list(data, path + ["evidence"], of: "evidence")).each_with_index.map do |line, index|
+            fail_at(path + ["evidence", index], "evidence must be text") unless line.is_a?(String)
+            line
+          end
+          Cutoff.new(keeps: version(data, path + ["keeps"]), verdict: verdict, reason: @fields.text(data, path + ["reason"]),
+                     evidence: evidence.freeze).freeze
         end
 
         def interface(fields, path)

@@ -18,9 +18,14 @@ module Relspec
     # to the block (in a worker thread) and reports every outcome to
     # +on_done+ in the calling thread, one at a time.
     class Scheduler
-      # +status+: :built, :failed or :skipped; +value+: the block's return
+      # +status+: :built, :kept (Done), :failed or :skipped; +value+: the block's return
       # value (built), +reason+: why it failed or was skipped.
       Outcome = Struct.new(:entry, :status, :value, :reason, :duration, keyword_init: true)
+      # What the block returns for a success of another +status+ than
+      # :built (the early cutoff's :kept): its dependents go on as after a
+      # build.
+      Done = Struct.new(:status, :value, keyword_init: true)
+      SUCCESSES = %i[built kept].freeze
 
       # +entries+: objects with #source and #build_depends (source names);
       # +done+: sources already built (from an earlier run).
@@ -76,7 +81,7 @@ module Relspec
           running.delete(outcome.entry.source)&.join
           raise outcome.value if outcome.status == :crashed
 
-          if outcome.status == :built
+          if SUCCESSES.include?(outcome.status)
             wanted.delete(outcome.entry.source)
           else
             failed[outcome.entry.source] = outcome.entry.source
@@ -136,7 +141,7 @@ module Relspec
           started = Process.clock_gettime(Process::CLOCK_MONOTONIC)
           outcome = begin
             value = yield(entry)
-            Outcome.new(entry: entry, status: :built, value: value)
+            value.is_a?(Done) ? Outcome.new(entry: entry, status: value.status, value: value.value) : Outcome.new(entry: entry, status: :built, value: value)
           rescue Relspec::Error => e
             Outcome.new(entry: entry, status: :failed, reason: e.message)
           rescue StandardError => e # a bug: raised again in the calling thread

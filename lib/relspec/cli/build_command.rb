@@ -11,10 +11,11 @@ module Relspec
     # skipped.
     class BuildCommand
       def initialize(path:, out:, backend:, jobs:, targets:, keep_going:, rebuild:, prepare:, format:, out_io:,
-                     progress_io: nil, engine: "local", slurm: [], err_io: nil)
+                     progress_io: nil, engine: "local", slurm: [], err_io: nil, rebuild_dependents: false)
         @path = path
         @options = { out: out, backend: backend, jobs: jobs, targets: targets, keep_going: keep_going,
-                     rebuild: rebuild, prepare_only: prepare, engine: engine, notices: err_io }
+                     rebuild: rebuild, prepare_only: prepare, engine: engine, notices: err_io,
+                     rebuild_dependents: rebuild_dependents }
         @slurm = slurm
         @format = format
         @io = out_io
@@ -75,7 +76,9 @@ module Relspec
           [record.source, record.version.to_s, record.status, record.duration ? format("%.1f s", record.duration) : "",
            (record.reason || cutoff_text(record) || interface_text(record.interface)).to_s.lines.first.to_s.strip]
         end
-        @io.puts("#{report.target}: #{count(report, :built)} built, #{report.reused} already built, " \
+        kept = count(report, :kept)
+        @io.puts("#{report.target}: #{count(report, :built)} built, #{"#{kept} kept, " if kept.positive?}" \
+                 "#{report.reused} already built, " \
                  "#{count(report, :failed)} failed, #{count(report, :skipped)} skipped (#{report.dir})")
         return if rows.empty?
 
@@ -90,7 +93,7 @@ module Relspec
         cutoff = record.cutoff
         return nil unless cutoff
 
-        cutoff.keep? ? "early cutoff: keeps #{cutoff.keeps}: #{cutoff.reason}" : "early cutoff: rebuilt: #{cutoff.reason}"
+        cutoff.keep? ? "early cutoff: keeps #{cutoff.keeps}: #{cutoff.summary}" : "early cutoff: rebuilt: #{cutoff.reason}"
       end
 
       # The early cutoff's verdict of a build (docs/abi.md), in its row.

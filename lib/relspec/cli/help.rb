@@ -55,7 +55,9 @@ module Relspec
         to build-results.yml in the target folder after every package; a killed run is
         resumed by the next one. sbuild's C and C++ compiles go through ccache when
         relspec runs as root (/var/cache/relspec/ccache; RELSPEC_CCACHE=DIR chooses
-        another folder, RELSPEC_CCACHE=off none). See docs/build.md.
+        another folder, RELSPEC_CCACHE=off none). An early cutoff candidate of plan.yml
+        whose build closure left its interface unchanged is kept, not built (status
+        kept; docs/abi.md); --rebuild-dependents builds every candidate. See docs/build.md.
       TEXT
 
       CHECK = <<~TEXT

@@ -140,6 +140,7 @@ module Relspec
       option :target, type: :string, repeatable: true, desc: "Only this target (codename/arch); repeatable"
       option :keep_going, type: :boolean, default: false, desc: "Build what does not depend on a failed package"
       option :rebuild, type: :boolean, default: false, desc: "Rebuild packages an earlier run built"
+      option :rebuild_dependents, type: :boolean, default: false, desc: "Build every early cutoff candidate (docs/abi.md)"
       option :prepare, type: :boolean, default: false, desc: "Only make the chroot tarballs (sbuild)"
       option :format, enum: %w[text json], default: "text", desc: "Output format"
       option :engine, enum: %w[local slurm], default: "local",
@@ -151,11 +152,10 @@ module Relspec
         require_relative "build_command"
         require_relative "build_progress"
         require_relative "build_progress_lines"
-        finish BuildCommand.new(path: path, out: options[:out], backend: options[:backend], jobs: options[:jobs],
-                                targets: options[:target], keep_going: options[:keep_going],
-                                rebuild: options[:rebuild], prepare: options[:prepare], format: options[:format],
-                                out_io: $stdout, progress_io: options[:quiet] ? nil : $stderr,
-                                engine: options[:engine], slurm: options[:slurm] || [], err_io: $stderr).call
+        finish BuildCommand.new(path: path, **%i[out backend jobs keep_going rebuild prepare format engine rebuild_dependents]
+                                                .to_h { |key| [key, options[key]] },
+                                targets: options[:target], out_io: $stdout, progress_io: options[:quiet] ? nil : $stderr,
+                                slurm: options[:slurm] || [], err_io: $stderr).call
       end
 
       desc "mirror SPEC --out DIR | mirror verify DIR",

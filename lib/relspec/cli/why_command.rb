@@ -48,6 +48,9 @@ module Relspec
           "#{target}: #{@package} is inherited from #{decision.ancestor} as #{decision.deb_name} #{decision.version}\n"
         when :system
           "#{target}: #{@package} is taken from the distribution as #{decision.deb_name} #{decision.version}\n"
+        when ->(_) { decision.kept }
+          # the early cutoff kept it when its dependencies were rebuilt (docs/abi.md)
+          "#{target}: #{@package} is kept at #{decision.version} as #{decision.deb_name}: #{decision.kept}\n"
         else
           verb = decision.published? ? "was built here and is published" : "is built here"
           "#{target}: #{@package} #{verb} as #{decision.deb_name} #{decision.version}, because:\n#{steps(decision.cause)}\n" \

@@ -33,7 +33,8 @@ module Relspec
       def decisions(entries)
         entries.transform_values do |entry|
           Decision.new(kind: entry.decision, deb: entry.deb, version: entry.version, from: entry.from,
-                       causes: Array(entry.causes).map { |line| Printable.text(line) }.freeze, depends: entry.depends).freeze
+                       causes: Array(entry.causes).map { |line| Printable.text(line) }.freeze, depends: entry.depends,
+                       kept: entry.kept && Printable.text(entry.kept)).freeze
         end.freeze
       end
     end

@@ -39,6 +39,7 @@ module Relspec
       "added" => "added",
       "removed" => "removed",
       "version" => "version",
+      "kept" => "kept (early cutoff)",
       "ancestor" => "other ancestor",
       "cause" => "other cause"
     }.freeze

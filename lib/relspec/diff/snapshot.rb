@@ -9,7 +9,8 @@ module Relspec
     # name and version, the ancestor it comes from, the cause chain and, for
     # builds, the packages its debian/ names (+depends+; nil when the lock
     # predates that record). +depends+ is not compared: it only explains.
-    Decision = Struct.new(:kind, :deb, :version, :from, :causes, :depends, keyword_init: true) do
+    # +kept+: why the early cutoff kept a published version (docs/abi.md).
+    Decision = Struct.new(:kind, :deb, :version, :from, :causes, :depends, :kept, keyword_init: true) do
       def built?
         %w[build published].include?(kind)
       end
@@ -32,7 +33,7 @@ module Relspec
 
       def to_h
         { "decision" => kind, "deb" => deb, "version" => version, "from" => from,
-          "causes" => causes.empty? ? nil : causes }.compact
+          "causes" => causes.empty? ? nil : causes, "kept" => kept }.compact
       end
     end
 

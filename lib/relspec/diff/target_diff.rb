@@ -53,6 +53,7 @@ module Relspec
         return "build_to_inherit" if old.built? && new.inherited?
         return "decision" if old.kind != new.kind && !(old.built? && new.built?)
         return "version" if old.version != new.version
+        return "kept" if new.kept && old.kept != new.kept
         return "ancestor" if old.from != new.from || old.deb != new.deb
         return "cause" if old.causes != new.causes
 

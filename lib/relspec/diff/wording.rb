@@ -29,6 +29,9 @@ module Relspec
       # The cause chain on one line, nearest step first; for a new revision
       # of the same source, why it was rebuilt comes first.
       def causes(change)
+        # newly kept by the early cutoff (docs/abi.md): why, rather than the causes of the build it kept
+        return "kept at #{change.new.version}: #{change.new.kept}" if change.new&.kept && change.old&.kept != change.new.kept
+
         chain = change.causes.join(" ← ")
         return chain unless change.rebuilt_because
 

@@ -8,8 +8,11 @@ module Relspec
     # published versions in its place it is the debian/ of the build the
     # release's repository holds (+keeps+: that PackageVersion). Whether
     # it is kept is decided once those dependencies are built: when the
-    # interface of each did not change.
-    CutoffCandidate = Struct.new(:keeps, :because, keyword_init: true) do
+    # interface of each did not change. +debian_digest+: the digest of its
+    # debian/ once kept, its dependencies that are candidates themselves at
+    # the versions they keep: what the history vouches the kept version
+    # for when they are all kept too (publish; docs/abi.md).
+    CutoffCandidate = Struct.new(:keeps, :because, :debian_digest, keyword_init: true) do
       def to_s
         "early cutoff candidate: #{keeps} stays if the interface of #{because.join(', ')} does not change"
       end

@@ -14,9 +14,11 @@ module Relspec
     # names (its direct dependencies), sorted: a change of one of them is
     # what moves the build's revision when its own source did not change.
     # +cutoff+ (builds): a CutoffCandidate when only dependencies rebuilt
-    # now moved it, else nil.
+    # now moved it, else nil. +kept+ (published): why the early cutoff
+    # kept its version when its dependencies were rebuilt (the history's
+    # word, docs/abi.md), else nil.
     Decision = Struct.new(:package, :kind, :deb_name, :version, :ancestor, :cause, :debian_digest, :depends, :cutoff,
-                          keyword_init: true) do
+                          :kept, keyword_init: true) do
       def inherit?
         kind == :inherit
       end

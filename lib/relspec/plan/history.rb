@@ -9,7 +9,10 @@ module Relspec
     # revision, and an upstream version built again (a pin moved back) never
     # reuses a revision for other bytes. Immutable.
     class History
-      Build = Struct.new(:revision, :debian_digest, keyword_init: true)
+      # +kept+: why the early cutoff kept this revision for +debian_digest+
+      # (the debian/ naming its dependencies' new versions), nil for a
+      # revision built from it (docs/abi.md).
+      Build = Struct.new(:revision, :debian_digest, :kept, keyword_init: true)
 
       EMPTY = {}.freeze
 
@@ -40,12 +43,13 @@ module Relspec
       end
 
       # A history that also records every [target, package, version,
-      # debian_digest] of +builds+, copied once (a copy per build made
-      # recording a plan's builds grow with the square of their number).
+      # debian_digest, kept (optional)] of +builds+, copied once (a copy per
+      # build made recording a plan's builds grow with the square of their
+      # number).
       def with_all(builds)
-        added = builds.each_with_object({}) do |(target, package, version, debian_digest), out|
+        added = builds.each_with_object({}) do |(target, package, version, debian_digest, kept), out|
           ((out[target.to_s] ||= {})[package] ||= {})[version.upstream] =
-            Build.new(revision: version.revision, debian_digest: debian_digest).freeze
+            Build.new(revision: version.revision, debian_digest: debian_digest, kept: kept).freeze
         end
         History.new(@builds.merge(added) do |_, packages, new_packages|
           packages.merge(new_packages) { |_, upstreams, new_upstreams| upstreams.merge(new_upstreams) }
@@ -65,7 +69,7 @@ module Relspec
         @builds.sort.to_h do |target, packages|
           [target, packages.sort.to_h do |package, upstreams|
             [package, upstreams.sort_by { |upstream, _| Apt::Version.parse(upstream) }.to_h do |upstream, build|
-              [upstream, { "revision" => build.revision, "debian_digest" => build.debian_digest }]
+              [upstream, { "revision" => build.revision, "debian_digest" => build.debian_digest, "kept" => build.kept }.compact]
             end]
           end]
         end

@@ -5,8 +5,10 @@ require "json"
 require_relative "history"
 require_relative "../project"
 require_relative "cause"
+require_relative "decision"
 require_relative "source_record"
 require_relative "../frozen"
+require_relative "../debian/package_version"
 
 module Relspec
   module Plan
@@ -28,13 +30,14 @@ module Relspec
       # Its fields, in the order the lock writes them (LockParser accepts
       # exactly these): the one place that defines them.
       class Entry
-        FIELDS = %w[decision deb version from causes depends debian_digest].freeze
+        FIELDS = %w[decision deb version from causes depends debian_digest kept].freeze
         # The decisions a lock records; all but "unavailable" have a version.
         DECISIONS = %w[inherit build published system unavailable].freeze
 
-        attr_reader :decision, :deb, :version, :from, :depends, :debian_digest
+        attr_reader :decision, :deb, :version, :from, :depends, :debian_digest, :kept
 
-        def initialize(decision:, deb: nil, version: nil, from: nil, causes: nil, depends: nil, debian_digest: nil)
+        # +kept+: why the early cutoff kept the published +version+ (docs/abi.md).
+        def initialize(decision:, deb: nil, version: nil, from: nil, causes: nil, depends: nil, debian_digest: nil, kept: nil)
           @decision = Frozen.deep(decision)
           @deb = Frozen.deep(deb)
           @version = Frozen.deep(version)
@@ -42,6 +45,7 @@ module Relspec
           @causes = causes.is_a?(Cause) ? causes : Frozen.deep(causes)
           @depends = Frozen.deep(depends)
           @debian_digest = Frozen.deep(debian_digest)
+          @kept = Frozen.deep(kept)
           freeze
         end
 
@@ -51,6 +55,13 @@ module Relspec
 
         def to_h
           FIELDS.to_h { |field| [field, public_send(field)] }.compact
+        end
+
+        # The Decision this entry records for +package+ (its version as
+        # written), for the osdeps files.
+        def to_decision(package)
+          Decision.new(package: package, kind: decision.to_sym, deb_name: deb, version: version, ancestor: from,
+                       kept: kept).freeze
         end
       end
 
@@ -89,13 +100,16 @@ module Relspec
       def self.entry_of(decision)
         Entry.new(decision: decision.kind.to_s, deb: decision.deb_name, version: decision.version&.to_s,
                   from: decision.ancestor, causes: decision.cause, depends: decision.depends,
-                  debian_digest: decision.debian_digest).freeze
+                  debian_digest: decision.debian_digest, kept: decision.kept).freeze
       end
 
+      # An early cutoff candidate's history does not move here: the
+      # revision it keeps, if kept, is the one recorded; publish records
+      # the outcome (#published).
       def self.history_with(history, plan)
         history.with_all(plan.targets.flat_map do |target, decisions|
-          decisions.values.select { |decision| decision.build? || decision.published? }.map do |decision|
-            [target, decision.package, decision.version, decision.debian_digest]
+          decisions.values.select { |decision| (decision.build? && !decision.cutoff) || decision.published? }.map do |decision|
+            [target, decision.package, decision.version, decision.debian_digest, decision.kept]
           end
         end)
       end
@@ -116,6 +130,35 @@ module Relspec
       # records which spec it was planned from.
       def self.spec_digest(effective)
         Digest::SHA256.hexdigest(JSON.generate(effective.to_h))
+      end
+
+      # This lock once publish has put each of +outcomes+ into the
+      # release's repository ([target, package, version, kept, kept
+      # digest]: the version built; kept the early cutoff's Cutoff when it
+      # kept the published version instead, else nil; for a keep, the digest
+      # of the debian/ its history now vouches the kept version for, nil
+      # when none is known): the builds' history moves to them (a
+      # candidate's did not at compile time), and a kept package's decision
+      # becomes "published" at the version kept (docs/abi.md). Outcomes of
+      # another version than the locked build are left alone.
+      def published(outcomes)
+        entries = targets.transform_values(&:dup)
+        builds = outcomes.filter_map do |target, package, built, kept, kept_digest|
+          entry = entries.dig(target.to_s, package)
+          next unless entry&.decision == "build" && entry.version == built
+
+          version = Debian::PackageVersion.parse(kept ? kept.keeps : entry.version)
+          if kept
+            entries[target.to_s][package] = Entry.new(decision: "published", deb: entry.deb, version: version.to_s,
+                                                      from: entry.from, causes: entry.causes, depends: entry.depends,
+                                                      debian_digest: kept_digest || entry.debian_digest, kept: kept.summary).freeze
+          end
+          next if kept && !kept_digest # its next plan builds it again: safe
+
+          [target, package, version, kept ? kept_digest : entry.debian_digest, kept&.summary]
+        end
+        Lock.new(release: release, spec_digest: spec_digest, ancestors: ancestors, packages: packages, targets: entries,
+                 history: history.with_all(builds), warnings: warnings, notes: notes)
       end
 
       # Plain data, in the order the file is written.

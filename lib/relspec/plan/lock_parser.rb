@@ -125,7 +125,8 @@ module Relspec
         Lock::Entry.new(decision: decision, deb: optional_string(entry, path + ["deb"]),
                         version: version, from: optional_string(entry, path + ["from"]),
                         causes: causes, depends: depends,
-                        debian_digest: entry["debian_digest"] && digest(entry, path + ["debian_digest"])).freeze
+                        debian_digest: entry["debian_digest"] && digest(entry, path + ["debian_digest"]),
+                        kept: optional_string(entry, path + ["kept"])).freeze
       end
 
       def history(data, format)
@@ -137,10 +138,11 @@ module Relspec
               path = ["history", target, package, upstream]
               fail_at(path, "invalid upstream version #{upstream.inspect}") unless upstream.match?(/\A[0-9][A-Za-z0-9.+~]*\z/)
               mapping(build, path)
-              known_keys(build, path, %w[revision debian_digest])
+              known_keys(build, path, %w[revision debian_digest kept])
               revision = build["revision"]
               fail_at(path + ["revision"], "revision must be a positive whole number") unless revision.is_a?(Integer) && revision.positive?
-              [upstream, History::Build.new(revision: revision, debian_digest: digest(build, path + ["debian_digest"]))]
+              [upstream, History::Build.new(revision: revision, debian_digest: digest(build, path + ["debian_digest"]),
+                                            kept: optional_string(build, path + ["kept"]))]
             end]
           end]
         end

@@ -91,9 +91,20 @@ module Relspec
         %i[inherit build published] + optional
       end
 
-      # Packages that are neither inherited nor built: [[title, groups]].
+      # Packages that are neither inherited nor built, and published ones
+      # the early cutoff kept: [[title, groups]].
       def other_groups
-        [["taken from the distribution on", system_groups], ["not available on", unavailable_groups]]
+        [["kept by the early cutoff on", kept_groups], ["taken from the distribution on", system_groups],
+         ["not available on", unavailable_groups]]
+      end
+
+      # Published packages the early cutoff kept when their dependencies
+      # were rebuilt, with why (docs/abi.md).
+      def kept_groups
+        grouped do |target|
+          @plan.targets.fetch(target).values.select(&:kept).sort_by(&:package)
+               .to_h { |decision| [decision.package, "#{decision.deb_name} #{decision.version}: #{decision.kept}"] }
+        end
       end
 
       def unavailable_groups

@@ -87,7 +87,7 @@ module Relspec
         final = Decision.new(**decision.each_pair.to_h, kind: result.published ? :published : :build,
                                                         version: result.version, debian_digest: digest,
                                                         depends: @inputs.dependency_names(package, decisions).uniq.sort.freeze,
-                                                        cutoff: cutoff)
+                                                        cutoff: cutoff, kept: result.kept)
                         .freeze
         [final, Work.new(input: input, overlay: overlay, digest: digest).freeze]
       end
@@ -116,7 +116,18 @@ module Relspec
         before = @inputs.for(target, decision, upstream, decisions.merge(published))
         return nil unless digest_of(before, overlay, package) == recorded
 
-        CutoffCandidate.new(keeps: kept, because: published.keys.sort.freeze).freeze
+        CutoffCandidate.new(keeps: kept, because: published.keys.sort.freeze,
+                            debian_digest: kept_digest(target, decision, package, upstream, decisions, overlay)).freeze
+      end
+
+      # The digest of the candidate's debian/ with each dependency that is
+      # a candidate itself at the version it keeps (CutoffCandidate).
+      def kept_digest(target, decision, package, upstream, decisions, overlay)
+        kept = @inputs.dependency_names(package, decisions).uniq.filter_map do |name|
+          cutoff = decisions[name]&.cutoff
+          cutoff ? [name, Decision.new(**decisions[name].each_pair.to_h, version: cutoff.keeps).freeze] : nil
+        end.to_h
+        digest_of(@inputs.for(target, decision, upstream, decisions.merge(kept)), overlay, package)
       end
     end
   end

@@ -16,7 +16,9 @@ module Relspec
     # never given again, so a repository never receives two different files
     # under one name.
     class Versioning
-      Settled = Struct.new(:version, :published, keyword_init: true)
+      # +kept+: the history's reason when the published version is one the
+      # early cutoff kept for this debian/ (docs/abi.md), else nil.
+      Settled = Struct.new(:version, :published, :kept, keyword_init: true)
 
       # +history+: History; +own+: OwnRepository.
       def initialize(history:, own:)
@@ -35,7 +37,8 @@ module Relspec
           revision = held.revision + 1
         end
         version = Debian::PackageVersion.new(upstream, revision, target.codename)
-        Settled.new(version: version, published: vouched && version.same_as?(@own.version_of(deb_name, target))).freeze
+        published = vouched && version.same_as?(@own.version_of(deb_name, target))
+        Settled.new(version: version, published: published, kept: published ? recorded.kept : nil).freeze
       end
 
       # The version of +package+ (+deb_name+) the release's repository

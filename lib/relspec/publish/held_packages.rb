@@ -57,8 +57,7 @@ module Relspec
       end
 
       def decision(package, entry)
-        Plan::Decision.new(package: package, kind: entry.decision.to_sym, deb_name: entry.deb, version: entry.version,
-                           ancestor: entry.from).freeze
+        entry.to_decision(package)
       end
       private_class_method :held?, :same_version?, :decision
     end

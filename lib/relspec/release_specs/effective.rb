@@ -3,6 +3,7 @@
 require_relative "distribution"
 require_relative "defaults"
 require_relative "values/repository_entry"
+require_relative "values/early_cutoff"
 require_relative "values/blacklist_entry"
 require_relative "values/leave_out"
 require_relative "values/pin"
@@ -18,7 +19,7 @@ module Relspec
       # Key order of `relspec show`: identity, lineage, content, packaging.
       KEYS = %w[
         release description parent ancestors workspace select blacklist leave_out pins gems gem_source targets
-        repository install_prefix separate_prefixes package_prefix maintainer external distributions
+        repository install_prefix separate_prefixes package_prefix maintainer external distributions early_cutoff
       ].freeze
 
       attr_reader :values, :origins
@@ -55,6 +56,11 @@ module Relspec
       def repository
         origin = origins["repository"]
         origin && RepositoryEntry.from(values["repository"], base: File.dirname(origin.file.path))
+      end
+
+      # The release's EarlyCutoff setting (on when the spec says nothing).
+      def early_cutoff
+        EarlyCutoff.from(values["early_cutoff"])
       end
 
       # BlacklistEntry values in spec order.

@@ -9,6 +9,7 @@ require_relative "rules/leave_out"
 require_relative "rules/repository"
 require_relative "rules/settings"
 require_relative "rules/externals"
+require_relative "rules/early_cutoff"
 
 module Relspec
   module ReleaseSpec
@@ -17,7 +18,7 @@ module Relspec
     module FileRules
       ALL = [
         Rules::ReleaseIdentity, Rules::Parents, Rules::Targets, Rules::Pins, Rules::Blacklist, Rules::LeaveOut,
-        Rules::Repository, Rules::Settings, Rules::Externals
+        Rules::Repository, Rules::Settings, Rules::Externals, Rules::EarlyCutoff
       ].freeze
 
       def self.call(spec_file)

@@ -9,13 +9,13 @@ module Relspec
     # Computes a release's effective spec from its hierarchy (docs/spec-reference.md, Inheritance):
     #
     # - own keys never inherited: release, description, parent, workspace,
-    #   select, blacklist, leave_out, repository, external;
+    #   select, blacklist, leave_out, repository, external, early_cutoff;
     # - INHERITED keys take the value of the first parent (in `parent` order)
     #   whose effective spec has one, else the built-in default;
     # - pins merge: later parents first, earlier parents over them, the
     #   release's own pins over all.
     class Inheritance
-      OWN = %w[release description parent workspace select blacklist leave_out repository external].freeze
+      OWN = %w[release description parent workspace select blacklist leave_out repository external early_cutoff].freeze
       INHERITED = %w[targets install_prefix separate_prefixes package_prefix maintainer distributions gems
                      gem_source].freeze
       # Keys an external release may set for its descendants.

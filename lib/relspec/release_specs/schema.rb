@@ -31,10 +31,19 @@ module Relspec
         optional(:maintainer).filled(:string)
         optional(:external).value(:hash)
         optional(:distributions).value(:hash)
+        optional(:early_cutoff).value(:hash)
       end
 
       # Mappings checked by their own schemas (entry by entry where users choose the keys).
-      CHECKED_SEPARATELY = %w[pins gems targets external distributions repository].freeze
+      CHECKED_SEPARATELY = %w[pins gems targets external distributions repository early_cutoff].freeze
+
+      # The early cutoff (docs/abi.md), on unless `enabled: false`, which
+      # needs a reason (Rules::EarlyCutoff).
+      EARLY_CUTOFF = Dry::Schema.JSON do
+        config.validate_keys = true
+        required(:enabled).value(:bool)
+        optional(:reason).filled(:string)
+      end
 
       BLACKLIST_ENTRY = Dry::Schema.JSON do
         config.validate_keys = true

@@ -87,6 +87,7 @@ module Relspec
         check_blacklist(data["blacklist"])
         check_list("leave_out", Schema::LEAVE_OUT_ENTRY, data["leave_out"])
         apply(Schema::OWN_REPOSITORY, data["repository"], ["repository"]) if data["repository"].is_a?(Hash)
+        apply(Schema::EARLY_CUTOFF, data["early_cutoff"], ["early_cutoff"]) if data["early_cutoff"].is_a?(Hash)
         ENTRY_MAPPINGS.each do |key, schema|
           next unless data[key].is_a?(Hash)
 

@@ -22,7 +22,7 @@ module Relspec
         code, pre { font: 13px/1.4 ui-monospace, monospace; } pre { white-space: pre-wrap; overflow-wrap: anywhere; margin: 4px 0; }
         .badge { display: inline-block; padding: 0 6px; border-radius: 4px; font-size: 13px; white-space: nowrap; }
         .built { background: #d9f2dc; } .failed { background: #f9d0cc; font-weight: bold; } .skipped { background: #fde8bf; }
-        .not-built-yet { background: #e6e6e6; } .published { background: #d7e6f8; }
+        .not-built-yet { background: #e6e6e6; } .published { background: #d7e6f8; } .kept { background: #e3f0d0; }
         .changed { background: #fde8bf; } .incompatible { background: #f9d0cc; font-weight: bold; }
         .totals span { margin-right: 10px; white-space: nowrap; } .muted { color: #606060; }
         .error { background: #fff3f1; border-left: 4px solid #c0392b; padding: 6px 8px; margin: 6px 0 12px; }
@@ -179,6 +179,7 @@ module Relspec
                       h(cell.reason)
                     end
           "#{badge} <span class=\"muted\">#{because}</span>"
+        when "kept" then "#{badge} <span class=\"muted\">#{h(cell.reason)}</span>"
         else badge
         end
       end

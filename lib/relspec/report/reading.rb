@@ -69,14 +69,24 @@ module Relspec
         logs[link] = log if link
         failed = record&.status == "failed"
         Cell.new(package: package, source: source, decision: entry.decision, from: entry.from, version: entry.version,
-                 status: status(entry, record), reason: record&.reason&.lines&.first&.strip, blocked_by: blocked[source],
+                 status: status(entry, record), reason: reason(entry, record), blocked_by: blocked[source],
                  duration: record&.duration, log: link,
                  first_error: failed ? FirstError.of_file(log) || FirstError.clean(record.reason.to_s.lines.first.to_s) : nil,
                  causes: entry.causes&.dup&.freeze).freeze
       end
 
+      # Why a build failed or was skipped; why the early cutoff kept one
+      # (docs/abi.md), as its build decided it or as the lock records it.
+      def reason(entry, record)
+        return "kept at #{record.cutoff.keeps}: #{record.cutoff.summary}" if record&.kept?
+        return "kept at #{entry.version}: #{entry.kept}" if entry.kept && !record
+
+        record&.reason&.lines&.first&.strip
+      end
+
       def status(entry, record)
         return record.status if record
+        return "kept" if entry.kept
         return "published" if entry.decision == "published"
 
         entry.decision == "build" ? "not built yet" : nil
@@ -103,7 +113,7 @@ module Relspec
         end.sort_by { |blocker| [-blocker.blocked.size, blocker.package] }.freeze
       end
 
-      TOTALS = ["inherit", "build", "published", "system", "unavailable", "built", "failed", "skipped",
+      TOTALS = ["inherit", "build", "published", "system", "unavailable", "built", "kept", "failed", "skipped",
                 "not built yet"].freeze
 
       def totals(cells)

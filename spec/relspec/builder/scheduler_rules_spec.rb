@@ -26,6 +26,15 @@ RSpec.describe Relspec::Builder::Scheduler do
     expect(peak).to eq(2)
   end
 
+  # The early cutoff's keep (docs/abi.md): a success of another name.
+  it "reports a Done status as the block gives it, and goes on with its dependents as after a build" do
+    outcomes = described_class.new(entries("kept" => [], "user" => ["kept"]), jobs: 1).run do |entry|
+      entry.source == "kept" ? described_class::Done.new(status: :kept, value: []) : :files
+    end
+    expect(outcomes.map { |outcome| [outcome.entry.source, outcome.status, outcome.value] })
+      .to eq([["kept", :kept, []], ["user", :built, :files]])
+  end
+
   it "without --keep-going starts nothing after a failure and says so" do
     graph = { "bad" => [], "later" => [], "user" => ["bad"] }
     started = []

@@ -224,6 +224,35 @@ RSpec.describe "relspec build --engine slurm", order: :defined do
     FileUtils.rm_rf(File.join(@dir, ".relspec"))
   end
 
+  # docs/scale-out.md, Limits: a job keeps no ABI dumps, so Slurm keeps no
+  # early cutoff candidate (docs/abi.md) and its record says why. base/lib
+  # and base/user published by a local build; a new version of base/lib
+  # makes base/user a candidate.
+  it "builds an early cutoff candidate, recording that Slurm does not decide it" do
+    dir = Dir.mktmpdir("relspec-slurm-cutoff")
+    release = BuildRelease.new(dir, "sc")
+    release.package("base/lib")
+    release.package("base/user", dependencies: ["base/lib"])
+    release.compile(spec: "repository: { path: ../repos/sc, trusted: true }\n")
+    [%w[build --backend host], %w[publish]].each do |command, *options|
+      run = relspec(command, "specs/sc.yml", "--out", "out", *options, chdir: dir)
+      expect(run.exit_code).to eq(0), run.stdout + run.stderr
+    end
+    published = results(release)["packages"][release.source("base/user")]["version"]
+    FileUtils.mkdir_p(File.join(dir, "overlays", "base", "lib", "files"))
+    File.write(File.join(dir, "overlays", "base", "lib", "files", "new.txt"), "a new version of base/lib\n")
+    expect(relspec("compile", "specs/sc.yml", "--out", "out", chdir: dir).exit_code).to eq(0)
+
+    run = build(dir: dir, spec: "specs/sc.yml")
+    expect(run.exit_code).to eq(0), run.stdout + run.stderr + @cluster.logs
+    user = results(release)["packages"][release.source("base/user")]
+    expect(user["status"]).to eq("built")
+    expect(user["cutoff"]).to eq("keeps" => published, "verdict" => "rebuild",
+                                 "reason" => "not decided on Slurm: its builds keep no ABI dumps")
+  ensure
+    FileUtils.rm_rf(dir) if dir
+  end
+
   it "builds a real sbuild chain through Slurm, the chroot made by the target's chroot job" do
     release = BuildRelease.new(File.join(@dir, "sbuild"), "sls")
     release.package("base/one")

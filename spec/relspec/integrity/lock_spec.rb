@@ -117,7 +117,7 @@ RSpec.describe "the lock file" do
     File.write(@lock_path, Relspec::Yaml::Writer.dump(version1))
     lock = Relspec::Plan::LockParser.read(@lock_path, release: "rel")
     expect(lock.history.build("bionic/amd64", "base/cmake", "1.0.20200504.080000").to_h)
-      .to eq(revision: 3, debian_digest: digest)
+      .to eq(revision: 3, debian_digest: digest, kept: nil)
     expect(JSON.parse(relspec("plan", "specs/rel.yml", "--format", "json", chdir: @dir).stdout)
              .dig("targets", "bionic/amd64", "base/cmake", "version")).to eq("1.0.20200504.080000-3~bionic")
   end

@@ -37,6 +37,19 @@ RSpec.describe Relspec::Abi::InterfaceVerdicts, :tmpdir do
     expect(verdicts.comparable?(previous, entry)).to be(false)
   end
 
+  # A kept record lists the files of the build it keeps: the next build,
+  # at the kept record's own (never built) version, is compared with them.
+  it "compares with the build a kept record keeps, not with its planned version" do
+    verdicts = described_class.new({}, @dir)
+    files = record("1-1").files
+    keep = results::Cutoff.new(keeps: "1-1", verdict: "keep", reason: "r", evidence: [])
+    kept = results::Record.new(source: "a", package: "base/a", version: "1-2", status: "kept", files: files, cutoff: keep)
+    expect(kept.files_version).to eq("1-1")
+    expect(verdicts.comparable?(kept, entry)).to be(true) # entry: 1-2, the revision after the kept one
+    without_files = results::Record.new(source: "a", package: "base/a", version: "1-2", status: "kept", files: [], cutoff: keep)
+    expect(verdicts.comparable?(without_files, entry)).to be(false) # the target folder no longer had the kept build
+  end
+
   it "decides nothing, and keeps nothing, when there is nothing to compare" do
     verdicts = described_class.of(Struct.new(:records) { def [](source) = records[source] }.new({}), [entry], @dir)
     expect(verdicts.decide(entry, [])).to be_nil
@@ -46,15 +59,15 @@ RSpec.describe Relspec::Abi::InterfaceVerdicts, :tmpdir do
   # lib <- mid <- top: mid and top are candidates (only lib's new version
   # moved mid, only mid's moved top). lib was built at its planned version
   # by an earlier run, whose record holds its verdict.
-  def run_with(lib_verdict)
+  def run_with(lib_verdict, decide: true, refused: nil)
     lib = plan_entry("lib", "1-2")
     mid = plan_entry("mid", "1-2", needs: ["lib"], cutoff: Relspec::Builder::BuildPlan::Cutoff.new(keeps: "1-1", because: ["lib"]))
     top = plan_entry("top", "1-2", needs: ["mid"], cutoff: Relspec::Builder::BuildPlan::Cutoff.new(keeps: "1-1", because: ["mid"]))
     interface = results::Interface.new(against: "1-1", verdict: lib_verdict, compared: 2, changes: [])
     previous = { "lib" => results::Record.new(source: "lib", package: "base/lib", version: "1-2", status: "built", files: [],
                                               interface: interface) }
-    verdicts = described_class.new(previous, @dir, entries: [lib, mid, top])
-    [mid, top].each { |built| verdicts.decide(built, []) }
+    verdicts = described_class.new(previous, @dir, entries: [lib, mid, top], refused: refused)
+    [mid, top].each { |built| verdicts.decide(built, []) } if decide
     verdicts
   end
 
@@ -62,9 +75,55 @@ RSpec.describe Relspec::Abi::InterfaceVerdicts, :tmpdir do
     verdicts = run_with("unchanged")
     expect(verdicts.closure("top")).to eq(%w[lib mid])
     expect(verdicts.cutoff("mid").to_h).to eq("keeps" => "1-1", "verdict" => "keep",
-                                              "reason" => "the interface of lib did not change")
+                                              "reason" => "the interface of lib did not change",
+                                              "evidence" => ["lib: 2 files compared with 1-1, unchanged"])
     expect(verdicts.cutoff("top").to_h).to eq("keeps" => "1-1", "verdict" => "keep",
-                                              "reason" => "the interface of mid did not change")
+                                              "reason" => "the interface of mid did not change",
+                                              "evidence" => ["lib: 2 files compared with 1-1, unchanged", "mid kept at 1-1"])
+  end
+
+  # The run decides a candidate before building it (#keep): its closure is
+  # built then; a keep revoked names why it was built after all.
+  it "decides a candidate before it is built, revokes a keep, and refuses every keep when told why" do
+    verdicts = run_with("unchanged", decide: false)
+    mid = verdicts.instance_variable_get(:@entries)["mid"]
+    expect(verdicts.keep(verdicts.instance_variable_get(:@entries)["lib"])).to be_nil # no candidate
+    expect(verdicts.keep(mid).verdict).to eq("keep")
+    verdicts.revoke("mid", "built after all: top is built")
+    expect(verdicts.cutoff("mid").to_h).to eq("keeps" => "1-1", "verdict" => "rebuild", "reason" => "built after all: top is built")
+    verdicts.decide(mid, []) # the build that follows keeps the revoked decision
+    expect(verdicts.cutoff("mid").reason).to eq("built after all: top is built")
+    # a keep of an earlier run (none decided in this one) is revoked the same way
+    earlier = run_with("unchanged", decide: false)
+    earlier.revoke("top", "built after all: app is built")
+    expect(earlier.cutoff("top").to_h).to eq("keeps" => "1-1", "verdict" => "rebuild", "reason" => "built after all: app is built")
+    refused = run_with("unchanged", decide: false, refused: "--rebuild-dependents: every candidate is built")
+    expect(refused.keep(refused.instance_variable_get(:@entries)["mid"]).to_h)
+      .to eq("keeps" => "1-1", "verdict" => "rebuild", "reason" => "--rebuild-dependents: every candidate is built")
+  end
+
+  # A run resumed after mid was kept: mid's keep of the earlier run, at
+  # its planned version, counts for top as a keep of this run would.
+  it "counts a keep an earlier run made at the planned version" do
+    lib = plan_entry("lib", "1-2")
+    mid = plan_entry("mid", "1-2", needs: ["lib"], cutoff: Relspec::Builder::BuildPlan::Cutoff.new(keeps: "1-1", because: ["lib"]))
+    top = plan_entry("top", "1-2", needs: ["mid"], cutoff: Relspec::Builder::BuildPlan::Cutoff.new(keeps: "1-1", because: ["mid"]))
+    interface = results::Interface.new(against: "1-1", verdict: "unchanged", compared: 2, changes: [])
+    keep = results::Cutoff.new(keeps: "1-1", verdict: "keep", reason: "r", evidence: [])
+    previous = { "lib" => results::Record.new(source: "lib", package: "base/lib", version: "1-2", status: "built", files: [],
+                                              interface: interface),
+                 "mid" => results::Record.new(source: "mid", package: "base/mid", version: "1-2", status: "kept", files: [],
+                                              cutoff: keep) }
+    verdicts = described_class.new(previous, @dir, entries: [lib, mid, top])
+    expect(verdicts.keep(top).to_h).to include("verdict" => "keep", "evidence" => ["lib: 2 files compared with 1-1, unchanged",
+                                                                                   "mid kept at 1-1"])
+    stale = previous.merge("mid" => results::Record.new(**previous["mid"].to_h.slice("package", "status").transform_keys(&:to_sym),
+                                                        source: "mid", version: "1-1", files: [], cutoff: keep))
+    expect(described_class.new(stale, @dir, entries: [lib, mid, top]).keep(top).verdict).to eq("rebuild") # another version
+    # mid built in this run (its version was only planned when the keep was made): that keep no longer counts
+    rebuilt = described_class.new(previous, @dir, entries: [lib, mid, top])
+    rebuilt.decide(plan_entry("mid", "1-2", needs: ["lib"]), [])
+    expect(rebuilt.keep(top).to_h).to include("verdict" => "rebuild", "reason" => "mid has no verdict to go by")
   end
 
   it "rebuilds a candidate whose closure holds a changed interface, also two steps down" do

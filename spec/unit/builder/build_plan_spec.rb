@@ -59,16 +59,29 @@ RSpec.describe Relspec::Builder::BuildPlan do
 
   it "carries an early cutoff candidate, and refuses one that names what the build does not depend on" do
     candidate = entries.last.to_h.transform_keys(&:to_sym).merge(
-      cutoff: described_class::Cutoff.new(keeps: "2.0-1~bookworm", because: ["rock-r-base-a"])
+      cutoff: described_class::Cutoff.new(keeps: "2.0-1~bookworm", because: ["rock-r-base-a"], debian_digest: "d" * 64)
     )
     with = [entries.first, described_class::Entry.new(**candidate)]
     text = written(with)
     plan = described_class.parse(text, dir: "out/r/bookworm-amd64")
-    expect(plan.entries.last.cutoff.to_h).to eq("keeps" => "2.0-1~bookworm", "because" => ["rock-r-base-a"])
+    expect(plan.entries.last.cutoff.to_h).to eq("keeps" => "2.0-1~bookworm", "because" => ["rock-r-base-a"],
+                                                "debian_digest" => "d" * 64)
     expect(plan.entries.first.cutoff).to be_nil
     expect(error_of(text.sub(/because:\n *- rock-r-base-a/, "because: [rock-r-base-c]")))
       .to include('"rock-r-base-c" is not among the build\'s build_depends')
     expect(error_of(text.sub('keeps: "2.0-1~bookworm"', "keeps: 2 0"))).to include('invalid Debian version "2 0"')
+    expect(error_of(text.sub("d" * 64, "xyz"))).to include("debian_digest must be 64 lowercase hex digits")
+    expect(described_class.parse(text.sub(/ *debian_digest: d+
+/, ""), dir: "out").entries.last.cutoff.debian_digest).to be_nil
+  end
+
+  it "gives a build's closure in plan order, dependencies first, each once" do
+    make = ->(source, needs) { described_class::Entry.new(package: source, source: source, version: "1", dsc: "x", build_depends: needs) }
+    entries = [make.call("z", []), make.call("a", ["z"]), make.call("m", %w[a z]), make.call("top", %w[m a])]
+    by_source = entries.to_h { |one| [one.source, one] }
+    expect(described_class.closure(by_source, "top")).to eq(%w[z a m])
+    expect(described_class.closure(by_source, "z")).to eq([])
+    expect(described_class.closure(by_source, "unknown")).to eq([])
   end
 
   it "refuses binary bytes, an empty file and broken YAML" do

@@ -54,7 +54,7 @@ RSpec.describe Relspec::Builder::BuildResults do
   end
 
   {
-    "an unknown status" => [["status: failed", "status: broken"], 17, 'status "broken" is not one of built, failed, skipped, published'],
+    "an unknown status" => [["status: failed", "status: broken"], 17, 'status "broken" is not one of built, kept, failed, skipped, published'],
     "an unknown key" => [["duration: 3.0", "durations: 3.0"], 18, 'unknown key "durations"'],
     "a path leaving the target folder" => [["name: results/", "name: ../../"], 13, "is not a plain path inside the target folder"],
     "a bad digest" => [["sha256: #{'a' * 64}", "sha256: abc"], 13, "sha256 must be 64 lowercase hex digits"],
@@ -133,6 +133,28 @@ RSpec.describe Relspec::Builder::BuildResults do
     expect(cutoff.to_h).to eq("keeps" => "1.0-1~bookworm", "verdict" => "keep", "reason" => "the interface of x did not change")
     expect(cutoff.keep?).to be(true)
     expect(error_of(with.sub("verdict: keep", "verdict: maybe"))).to include('verdict "maybe" is not one of keep, rebuild')
+  end
+
+  # docs/abi.md: a candidate the early cutoff kept is not built; its
+  # record says so, with the keep and its evidence, and counts as done
+  # for the same version and .dsc only.
+  it "reads a kept record with its evidence, and refuses a kept one without a keep at its line" do
+    kept = good.sub(/    status: built\n.*\n.*\n    files:\n.*\n/,
+                    "    dsc_sha256: #{'b' * 64}\n    status: kept\n    cutoff:\n      keeps: 1.0-0~bookworm\n      verdict: keep\n      " \
+                    "reason: the interface of x did not change\n      evidence: [\"x: 3 files compared with 1-1, unchanged\"]\n")
+    expect(kept).not_to eq(good)
+    results = parse(kept)
+    record = results["rock-demo-base-base-cmake"]
+    expect([record.kept?, record.built?, record.files]).to eq([true, false, []])
+    expect(record.cutoff.summary).to eq("the interface of x did not change (x: 3 files compared with 1-1, unchanged)")
+    expect(record.to_h["cutoff"]["evidence"]).to eq(["x: 3 files compared with 1-1, unchanged"])
+    expect(results.kept?("rock-demo-base-base-cmake", "1.0-1~bookworm", "b" * 64)).to be(true)
+    expect(results.kept?("rock-demo-base-base-cmake", "1.0-1~bookworm", "c" * 64)).to be(false) # another .dsc
+    expect(results.kept?("rock-demo-base-base-cmake", "1.0-2~bookworm", "b" * 64)).to be(false)
+    expect(results.built.map(&:source)).to eq([])
+    expect(error_of(kept.sub("verdict: keep", "verdict: rebuild")))
+      .to match(/build-results\.yml:10:\d+: error\[build-results\]: .*a kept package names the early cutoff's keep/)
+    expect(error_of(kept.sub(/evidence: .*/, "evidence: [7]"))).to include("evidence must be text")
   end
 
   it "gives the records of the planned sources as a view and keeps the others in the file" do

@@ -35,6 +35,30 @@ RSpec.describe Relspec::Diff::ReleaseDiff do
     expect(Relspec::Diff.render([diff], "markdown")).to include("**Sources**\n\n- base/types: source url https://example.org/t.git → ")
   end
 
+  # docs/abi.md: the lock publish wrote after the early cutoff kept a
+  # dependent, against the one before: the same version, kept, and why.
+  it "shows a dependent the early cutoff kept, and why, in each format" do
+    published = lambda do |kept, decision: "published", version: "1.0-1~bookworm"|
+      entry = Relspec::Plan::Lock::Entry.new(decision: decision, deb: "rock-r-base-user", version: version,
+                                             causes: ["missing in all ancestors"], kept: kept)
+      Relspec::Diff::LockView.snapshot(Relspec::Plan::Lock.new(release: "r", spec_digest: digest, ancestors: {}, packages: {},
+                                                               targets: { "bookworm/amd64" => { "base/user" => entry } },
+                                                               history: Relspec::Plan::History.empty, warnings: [], notes: []),
+                                       source: "lock.yml")
+    end
+    diff = described_class.compare(published.call(nil), published.call("the interface of base/lib did not change (x)"))
+    expect(diff.changed?).to be(true)
+    expect(Relspec::Diff.render([diff], "text"))
+      .to include("kept (early cutoff)  base/user: ", "      kept at 1.0-1~bookworm: the interface of base/lib did not change (x)\n")
+    expect(diff.to_h["targets"].first["changes"].first)
+      .to include("change" => "kept", "new" => include("kept" => "the interface of base/lib did not change (x)"))
+    expect(described_class.compare(published.call("same"), published.call("same")).changed?).to be(false)
+    # the lock compile wrote (the candidate planned at -2) against publish's
+    compiled = published.call(nil, decision: "build", version: "1.0-2~bookworm")
+    expect(Relspec::Diff.render([described_class.compare(compiled, published.call("why"))], "text"))
+      .to include("base/user: ", "      kept at 1.0-1~bookworm: why\n")
+  end
+
   it "is unchanged, without a sources key, when every field is the same" do
     diff = compare({})
     expect(diff.changed?).to be(false)

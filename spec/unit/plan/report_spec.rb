@@ -27,4 +27,17 @@ RSpec.describe Relspec::Plan::Report do
     expect(report.markdown).to include("- `base/user` (`rock-r-base-user`): missing in all ancestors; early cutoff candidate: " \
                                        "1.0-1~bookworm stays if the interface of base/lib does not change\n")
   end
+
+  it "lists the published packages the early cutoff kept, with why" do
+    kept = Relspec::Plan::Decision.new(package: "base/user", kind: :published, deb_name: "rock-r-base-user",
+                                       version: Relspec::Debian::PackageVersion.new("1.0", 1, "bookworm"),
+                                       cause: Relspec::Plan::Cause.missing, kept: "the interface of base/lib did not change").freeze
+    plan = Relspec::Plan::ReleasePlan.new(release: "r", targets: { target => { "base/user" => kept } },
+                                          packages: {}, release_digests: {}, warnings: [], notes: [])
+    report = described_class.new(plan, Struct.new(:ancestors).new({}))
+    expect(report.text).to include("\nkept by the early cutoff on bookworm/amd64:\n  base/user  rock-r-base-user " \
+                                   "1.0-1~bookworm: the interface of base/lib did not change\n")
+    expect(report.markdown).to include("**Kept by the early cutoff on bookworm/amd64**\n\n- `base/user`: rock-r-base-user " \
+                                       "1.0-1~bookworm: the interface of base/lib did not change")
+  end
 end

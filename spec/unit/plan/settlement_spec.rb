@@ -135,8 +135,9 @@ RSpec.describe Relspec::Plan::Settlement do
       types = again.fetch(target).fetch("base/types")
       expect([logging.kind, logging.version.revision, logging.cutoff]).to eq([:build, 2, nil])
       expect([types.kind, types.version.revision]).to eq([:build, 2]) # built as today until the cutoff decides
+      # no dependency of base/types is a candidate: kept, its debian/ is the one planned
       expect(types.cutoff.to_h).to eq(keeps: Relspec::Debian::PackageVersion.parse("#{upstream}-1~bookworm"),
-                                      because: ["base/logging"])
+                                      because: ["base/logging"], debian_digest: types.debian_digest)
       expect(types.cutoff.to_s).to eq("early cutoff candidate: #{upstream}-1~bookworm stays if the interface of " \
                                       "base/logging does not change")
     end

@@ -14,12 +14,24 @@ RSpec.describe Relspec::Plan::Versioning do
   # what an index entry of the repository answers
   let(:index_entry) { Struct.new(:version) }
 
-  def history(revision: nil, digest: nil)
+  def history(revision: nil, digest: nil, kept: nil)
     return Relspec::Plan::History.empty unless revision
 
     Relspec::Plan::History.new("bookworm/amd64" => { "pkg/a" => { upstream => Relspec::Plan::History::Build.new(
-      revision: revision, debian_digest: digest
+      revision: revision, debian_digest: digest, kept: kept
     ) } })
+  end
+
+  # docs/abi.md: publish recorded that the early cutoff kept revision 1 for
+  # this debian/; a plan says so while the repository holds it.
+  it "says why a published revision was kept, and a new debian/ goes on after it" do
+    kept = history(revision: 1, digest: digest, kept: "the interface of lib did not change")
+    settled = settle(history: kept, own: own("#{upstream}-1~bookworm"))
+    expect([settled.version.to_s, settled.published, settled.kept])
+      .to eq(["#{upstream}-1~bookworm", true, "the interface of lib did not change"])
+    expect(settle(history: kept, own: own).kept).to be_nil # not held: built, nothing kept
+    later = settle(history: kept, own: own("#{upstream}-1~bookworm"), digest: "e" * 64)
+    expect([later.version.to_s, later.published, later.kept]).to eq(["#{upstream}-2~bookworm", false, nil])
   end
 
   def own(version = nil)

@@ -109,6 +109,29 @@ RSpec.describe Relspec::Report::Reading do
     expect(changes["tools/new"]).to include("change" => "added", "new" => "build 0.2-1")
   end
 
+  # docs/abi.md: a candidate the build kept, and one the lock records kept
+  # once published, are shown kept with why.
+  it "shows a kept candidate with why, from its record or from the lock" do
+    kept_results = Relspec::Builder::BuildResults.parse(<<~YAML, file: File.join(@dir, "build-results.yml"), release: "child", target: target)
+      relspec_build_results: 1
+      release: child
+      target: bookworm/amd64
+      backend: host
+      packages:
+        rock-io: { package: drivers/io, version: 1.0-1, status: kept, cutoff: { keeps: 1.0-0, verdict: keep, reason: the interface of rock-types did not change, evidence: ["rock-types: 3 files compared with 1.9-1, unchanged"] } }
+    YAML
+    published = lock("child", "tools/ui" => Relspec::Plan::Lock::Entry.new(decision: "published", deb: "rock-ui", version: "0.1-1",
+                                                                           kept: "the interface of rock-io did not change"),
+                              "drivers/io" => entry("build", "1.0-1"))
+    input = Relspec::TargetBuild.new(target: target, dir: @dir, plan: plan, results: kept_results)
+    page, = described_class.new(lock: published, inputs: [input], counter: Struct.new(:none) { def count(*) = nil }.new).page
+    cells = page.targets.first.cells.to_h { |cell| [cell.package, cell] }
+    expect([cells["drivers/io"].status, cells["drivers/io"].reason])
+      .to eq(["kept", "kept at 1.0-0: the interface of rock-types did not change (rock-types: 3 files compared with 1.9-1, unchanged)"])
+    expect([cells["tools/ui"].status, cells["tools/ui"].reason]).to eq(["kept", "kept at 0.1-1: the interface of rock-io did not change"])
+    expect(page.targets.first.totals).to include("kept" => 2, "published" => 1)
+  end
+
   it "refuses a log that is a symbolic link, or one below a linked folder, naming the link (it could publish any file)" do
     FileUtils.rm(File.join(@dir, "logs", "rock-types.log"))
     File.symlink("/etc/hostname", File.join(@dir, "logs", "rock-types.log"))
