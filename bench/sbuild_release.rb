@@ -40,19 +40,34 @@ def relspec(dir, *args, env: {})
   run!(env, RbConfig.ruby, EXE, *args, chdir: dir)
 end
 
+# A build run: its wall time; a failed package is counted, not fatal (its
+# log stays in the bench's folder, which is then kept).
+def build(dir, spec, env)
+  status = nil
+  seconds = Timing.seconds do
+    _output, status = Open3.capture2e(env, RbConfig.ruby, EXE, "build", spec, "--backend", "sbuild", "--jobs", "2",
+                                      "--rebuild", "--quiet", chdir: dir)
+  end
+  [seconds, status.success?]
+end
+
 def load_average
   File.read("/proc/loadavg").split.first(3).join(" ")
 end
 
-# The recorded durations of the release's builds: target => [count, sum].
+# The recorded builds of the release: target => [built, failed, sum of durations].
 def durations(dir, release)
   Dir.glob(File.join(dir, "build", release, "*", "build-results.yml")).sort.to_h do |file|
     records = YAML.safe_load(File.read(file)).fetch("packages").values
-    [File.basename(File.dirname(file)), [records.size, records.sum { |record| record.fetch("duration") }]]
+    built = records.count { |record| record["status"] == "built" }
+    [File.basename(File.dirname(file)), [built, records.size - built, records.sum { |record| record.fetch("duration") }]]
   end
 end
 
-Dir.mktmpdir("relspec-bench-sbuild-release") do |dir|
+$stdout.sync = true
+dir = Dir.mktmpdir("relspec-bench-sbuild-release")
+failed = false
+begin
   demo = File.join(dir, "demo")
   FileUtils.mkdir_p(demo)
   run!({}, "sh", "-c", "git -C \"$1\" archive HEAD examples specs spec/support spec/fixtures | tar -x -C \"$2\"",
@@ -69,9 +84,12 @@ Dir.mktmpdir("relspec-bench-sbuild-release") do |dir|
     relspec(demo, "compile", spec, "--no-check")
     ways.each do |way, env|
       load = load_average
-      seconds = Timing.seconds { relspec(demo, "build", spec, "--backend", "sbuild", "--jobs", "2", "--rebuild", "--quiet", env: env) }
+      seconds, success = build(demo, spec, env)
+      failed ||= !success
       totals[way] += seconds
-      per_target = durations(demo, release).map { |target, (count, sum)| format("%s %d packages %.1f s", target, count, sum) }
+      per_target = durations(demo, release).map do |target, (built, failures, sum)|
+        format("%s %d built %d failed %.1f s", target, built, failures, sum)
+      end
       puts format("%-10s %s way: %6.1f s wall (load %s before); build durations: %s", release, way, seconds, load,
                   per_target.join(", "))
     end
@@ -79,4 +97,7 @@ Dir.mktmpdir("relspec-bench-sbuild-release") do |dir|
   end
   puts format("both releases: old way %.1f s, new way %.1f s (%.0f %% less), load %s at the end", totals["old"],
               totals["new"], 100 * (1 - (totals["new"] / totals["old"])), load_average)
+ensure
+  # a failed build's log is worth reading
+  failed ? puts("kept #{dir} (a build failed)") : FileUtils.rm_rf(dir)
 end
