@@ -38,7 +38,7 @@ require "relspec/builder/tool"
 require "relspec/builder/unpack_dir"
 require "relspec/target"
 
-PHASES = [["start", nil], ["unpack chroot", /^Unpacking \S+ to /], ["apt-get update", /^\| Update chroot/],
+PHASES = [["start", nil], ["unpack + session setup", /^Unpacking \S+ to /], ["apt-get update", /^\| Update chroot/],
           ["copy source", /^\| Fetch source files/], ["build-deps", /^\| Install package build dependencies/],
           ["build", /^\| Check architectures/], ["changes etc.", /^\| Changes/], ["clean up", /^\| Post Build/],
           ["end", /^\| Summary/]].freeze
