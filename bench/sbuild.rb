@@ -12,9 +12,11 @@
 #    target), alternating BENCH_ROUNDS times (default 2): each package's
 #    recorded duration and the sbuild/host ratio.
 # 2. sbuild alone, each line of its output timestamped, its phases (its
-#    section banners): the old command line as the backend ran it, then the
-#    same build on a layer over the chroot unpacked once (ChrootLayers),
-#    without and with the kept .debs, alternating as well.
+#    section banners) in a table with the total's ratio to the host
+#    backend: the old command line as the backend ran it, then the same
+#    build on a layer over the chroot unpacked once (ChrootLayers, with its
+#    configuration: no apt-get update, nothing purged), without and with
+#    the kept .debs, alternating as well.
 #
 # The chroot tarball lives in relspec's cache (XDG_CACHE_HOME): made by the
 # first --prepare when missing, and timed separately then. The layers need
@@ -36,7 +38,7 @@ require "relspec/builder/tool"
 require "relspec/builder/unpack_dir"
 require "relspec/target"
 
-PHASES = [["start", nil], ["unpack chroot", /^Unpacking \S+ to /], ["apt-get update", /^\| Update chroot/],
+PHASES = [["start", nil], ["unpack + session setup", /^Unpacking \S+ to /], ["apt-get update", /^\| Update chroot/],
           ["copy source", /^\| Fetch source files/], ["build-deps", /^\| Install package build dependencies/],
           ["build", /^\| Check architectures/], ["changes etc.", /^\| Changes/], ["clean up", /^\| Post Build/],
           ["end", /^\| Summary/]].freeze
@@ -75,9 +77,15 @@ def timed_sbuild(command, env)
   end
 end
 
-def row(label, total, phases)
-  parts = phases.map { |name, seconds| format("%s %.1f", name, seconds) }
-  puts format("  %-34s %6.1f s: %s", label, total, parts.join(", "))
+# One row of the phase table: every phase's seconds ("-" for a step this
+# way leaves out), the total and its ratio to the host backend's build.
+def row(label, host, total, phases)
+  cells = PHASES.map(&:first)[0..-2].map { |name| phases[name] ? format("%.1f", phases[name]) : "-" }
+  puts format("| %s | %.1f | %.1f | %s |", label, total, total / host, cells.join(" | "))
+end
+
+def header
+  puts "| row | total | ratio to host | #{PHASES.map(&:first)[0..-2].join(' | ')} |"
 end
 
 # The sbuild command line the backend ran for +package+ the old way.
@@ -92,7 +100,7 @@ def timed_layered(command, layers, lower, unpack_dir, apt)
   target = Relspec::Target.new("bookworm", "amd64")
   layers.layer do |upper, work, merged|
     sbuild = command.map { |word| word.start_with?("--chroot=") ? "--chroot=#{layers.empty_tarball}" : word }
-    env = unpack_dir.environment([layers.config_line(merged), *apt&.config_lines(target)])
+    env = unpack_dir.environment([*layers.config_lines(merged), *apt&.config_lines(target)])
     timed_sbuild(layers.wrap(sbuild, lower, upper, work, merged), env)
   end
 end
@@ -120,10 +128,11 @@ Dir.mktmpdir("relspec-bench-sbuild") do |dir|
   puts format("first --prepare %.1f s (makes the chroot unless the cache has it)", prepare)
   puts format("per package (%s), relspec build's recorded durations:", PACKAGES.join(", "))
   command = nil
+  host = nil
   ROUNDS.times do |round|
     puts format(" round %d, load average %s", round + 1, load_average)
     relspec(dir, *build, "host")
-    host = durations(release, PACKAGES).sum / PACKAGES.size
+    host = durations(release, PACKAGES).sum / PACKAGES.size.to_f
     relspec(dir, *build, "sbuild", env: OLD)
     before = durations(release, PACKAGES)
     command ||= old_command(release, PACKAGES.first)
@@ -146,12 +155,14 @@ Dir.mktmpdir("relspec-bench-sbuild") do |dir|
   lower = nil
   unpacked = Timing.seconds { lower = layers.lower(Relspec::Builder::Tool.new, "bench", File.join(dir, "unpack.log")) }
   apt = Relspec::Builder::AptCache.from_environment
-  puts format("sbuild alone, its phases (seconds; the chroot unpacked once in %.1f s):", unpacked)
+  puts format("sbuild alone, its phases (seconds; the chroot unpacked and its lists refreshed once in %.1f s; " \
+              "ratio to the last host build, %.1f s):", unpacked, host)
   ROUNDS.times do |round|
     puts format(" round %d, load average %s", round + 1, load_average)
-    row("before#{tmpfs.empty? ? ' (no room on tmpfs)' : ', chroot on tmpfs'}", *timed_sbuild(command, tmpfs))
-    row("after: layer", *timed_layered(command, layers, lower, unpack_dir, nil))
-    row("after: layer, kept .debs", *timed_layered(command, layers, lower, unpack_dir, apt)) if apt
+    header
+    row("before#{tmpfs.empty? ? ' (no room on tmpfs)' : ', chroot on tmpfs'}", host, *timed_sbuild(command, tmpfs))
+    row("after: layer", host, *timed_layered(command, layers, lower, unpack_dir, nil))
+    row("after: layer, kept .debs", host, *timed_layered(command, layers, lower, unpack_dir, apt)) if apt
   end
   unpack_dir.close
 end

@@ -90,10 +90,20 @@ module Relspec
          "sh", lower, upper, work, merged, *command]
       end
 
-      # The line of sbuild's configuration binding +merged+ as the chroot's
-      # root, before every other bind mount.
-      def config_line(merged)
-        "unshift @{$unshare_bind_mounts}, { directory => #{BuildUserFolder.perl(merged)}, mountpoint => '#{ROOT}' };"
+      # The lines of sbuild's configuration for a build on the layer whose
+      # merged folder is +merged+: the overlay bound as the chroot's root,
+      # before every other bind mount; and sbuild's steps that a throw-away
+      # layer makes useless left out (docs/build.md): no apt-get update (the
+      # lower layer's lists were refreshed once, #lower; the resolver still
+      # updates the lists of its own archive, the --extra-package archive
+      # and the --extra-repository lines), no removal of the build tree nor
+      # of the session (the layer goes as a whole; the results are copied
+      # out before), and sbuild's empty session folder in the layer's folder.
+      def config_lines(merged)
+        session = File.join(File.dirname(merged), "session.XXXXXXXXXX")
+        ["unshift @{$unshare_bind_mounts}, { directory => #{BuildUserFolder.perl(merged)}, mountpoint => '#{ROOT}' };",
+         "$apt_update = 0;", "$purge_build_directory = 'never';", "$purge_session = 'never';",
+         "$unshare_tmpdir_template = #{BuildUserFolder.perl(session)};"]
       end
 
       private
@@ -105,7 +115,25 @@ module Relspec
         File.chown(@uids.first, @gids.first, lower)
         # the tarball is read here (root's cache is closed to the chroot's users)
         tool.run(source, unpack_command(lower), log: log, stdin: @tarball, name: "unpacking the chroot")
+        tool.run(source, refresh_command(lower), log: log, name: "refreshing the chroot's package lists")
         lower
+      end
+
+      # apt-get update in the lower layer, once per run, instead of in every
+      # build: as the chroot's root (sbuild's mapping), with the device
+      # nodes, /proc and the name servers every sbuild session gives it.
+      def refresh_command(lower)
+        devices = "for f in null zero full random urandom; do touch \"$1/dev/$f\" && " \
+                  "mount -o bind \"/dev/$f\" \"$1/dev/$f\" || exit 1; done"
+        [*namespace, "--mount", "--pid", "--fork", "--", "sh", "-c",
+         "#{devices} && mount -t proc proc \"$1/proc\" && cat /etc/resolv.conf > \"$1/etc/resolv.conf\" && " \
+         "exec chroot \"$1\" apt-get -o Acquire::Languages=none update", "sh", lower]
+      end
+
+      # unshare's options for a user namespace with sbuild's mapping, root in it
+      def namespace
+        ["unshare", "--user", "--map-users=#{@uids[0]},0,#{@uids[1]}", "--map-groups=#{@gids[0]},0,#{@gids[1]}",
+         "--setuid", "0", "--setgid", "0"]
       end
 
       def unpack_command(lower)
@@ -113,8 +141,7 @@ module Relspec
                    "{ grep -q '^sbuild:' \"$1/etc/passwd\" || useradd --root \"$1\" --system --home-dir " \
                    "/var/lib/sbuild --no-create-home --shell /bin/bash --gid sbuild --comment 'Debian source " \
                    "builder,,,' sbuild; }"
-        ["unshare", "--user", "--map-users=#{@uids[0]},0,#{@uids[1]}", "--map-groups=#{@gids[0]},0,#{@gids[1]}",
-         "--setuid", "0", "--setgid", "0", "--", "sh", "-c",
+        [*namespace, "--", "sh", "-c",
          "zstd -dc | tar -C \"$1\" -x --numeric-owner #{DEVICES.join(' ')} && #{add_user}", "sh", lower]
       end
 

@@ -132,7 +132,7 @@ module Relspec
         lower = layers.lower(@tool, request.source, request.log)
         layers.layer do |upper, overlay_work, merged|
           command = layers.wrap(command(request, work, layers.empty_tarball), lower, upper, overlay_work, merged)
-          run(request, work, command, [layers.config_line(merged)])
+          run(request, work, command, layers.config_lines(merged))
         end
       end
 

@@ -95,6 +95,11 @@ RSpec.describe "relspec build --backend sbuild", order: :defined do
       expect(two).not_to include(unpacking)
       expect(two).to match(/^\$ unshare --mount --propagation private -- .* sbuild .*--chroot=\S+empty\.tar /)
       expect(two).not_to include("bookworm-amd64.tar.zst")
+      # apt's lists refreshed once in the lower layer (with the unpacking),
+      # not in every build; the layer goes as a whole, sbuild removes nothing
+      refresh = "chroot \"$1\" apt-get -o Acquire::Languages=none update"
+      expect([one, two, three].map { |log| log.include?(refresh) }.count(true)).to eq(1)
+      expect([one, two, three]).to all(satisfy { |log| !log.include?("| Update chroot") && log.include?("Keeping session: ") })
 
       # The .debs base/one downloaded (cmake) are kept for the target and
       # base/two takes them from there.

@@ -41,7 +41,13 @@ RSpec.describe Relspec::Builder::ChrootLayers do
     expect(command).to eq(["unshare", "--mount", "--propagation", "private", "--", "sh", "-c",
                            'mount -t overlay overlay -o "lowerdir=$1,upperdir=$2,workdir=$3" "$4" && shift 4 && exec "$@"',
                            "sh", "/l", "/u", "/w", "/m", "sbuild", "x.dsc"])
-    expect(layers.config_line("/m/it's")).to eq("unshift @{$unshare_bind_mounts}, { directory => '/m/it\\'s', mountpoint => '/' };")
+    expect(layers.config_lines("/l/it's/merged")).to eq(
+      ["unshift @{$unshare_bind_mounts}, { directory => '/l/it\\'s/merged', mountpoint => '/' };",
+       # what a throw-away layer makes useless (the lists were refreshed in the lower layer)
+       "$apt_update = 0;", "$purge_build_directory = 'never';", "$purge_session = 'never';",
+       # sbuild's empty session folder goes with the layer
+       "$unshare_tmpdir_template = '/l/it\\'s/session.XXXXXXXXXX';"]
+    )
     empty = layers.empty_tarball
     expect(File.binread(empty)).to eq("\0" * 1024)
   end
@@ -55,11 +61,18 @@ RSpec.describe Relspec::Builder::ChrootLayers do
     layers = described_class.new("/c/t.tar.zst", @dir, **ids)
     lower = layers.lower(tool, "rock-a", "/log")
     expect(layers.lower(tool, "rock-b", "/log")).to eq(lower)
-    expect(tool.runs.size).to eq(1)
+    expect(tool.runs.size).to eq(2)
     (source, command), options = tool.runs.first
     expect([source, options]).to eq(["rock-a", { log: "/log", stdin: "/c/t.tar.zst", name: "unpacking the chroot" }])
     expect(command.last(2)).to eq(["sh", lower])
     expect(command[-3]).to include("zstd -dc | tar -C \"$1\" -x --numeric-owner --exclude=./dev/urandom")
+    # its package lists refreshed once, as the chroot's root, for every build on it
+    (source, command), options = tool.runs.last
+    expect([source, options]).to eq(["rock-a", { log: "/log", name: "refreshing the chroot's package lists" }])
+    expect(command.first(4)).to eq(["unshare", "--user", "--map-users=#{Process.uid},0,1", "--map-groups=#{Process.gid},0,1"])
+    expect(command).to include("--mount", "--pid", "--fork")
+    expect(command.last(2)).to eq(["sh", lower])
+    expect(command[-3]).to end_with('exec chroot "$1" apt-get -o Acquire::Languages=none update')
     expect(File.directory?(lower)).to be(true)
   end
 
