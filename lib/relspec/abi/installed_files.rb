@@ -7,6 +7,7 @@ require "rubygems/package"
 require "tempfile"
 require_relative "../error"
 require_relative "../frozen"
+require_relative "../elf_file"
 require_relative "../builder/abi_dumper"
 
 module Relspec
@@ -22,13 +23,14 @@ module Relspec
       # +kind+: :file, :link (+content+: its target) or :library (a shared
       # library, as Dumper finds them: an ELF file named lib*.so*; compared
       # by its ABI dump, not its bytes); +content+: the SHA256 of a file's
-      # or a library's bytes.
+      # or a library's bytes (an ELF file's without its debug links).
       Entry = Struct.new(:kind, :content, keyword_init: true)
 
       DEBUG_PACKAGE = /-dbgsym_[^_]+_[^_]+\.d?deb\z/
       LEFT_OUT = %r{\A(?:usr/lib/debug/|usr/share/doc/[^/]+/changelog(?:\.Debian)?(?:\.gz)?\z)}
       # Anything larger than this in one package is not a Rock library.
       MAX_FILE = 2 * 1024 * 1024 * 1024
+      ELF_IN_MEMORY = 512 * 1024 * 1024
 
       module_function
 
@@ -83,14 +85,32 @@ module Relspec
         return Entry.new(kind: :link, content: tar.header.linkname).freeze if tar.symlink? || tar.header.typeflag == "1"
         raise ToolError, "#{source}: #{path} is larger than #{MAX_FILE} bytes" if tar.header.size > MAX_FILE
 
+        head, digest = digest(tar)
+        library = File.basename(path).match?(Builder::AbiDumper::LIBRARY) && head == Builder::AbiDumper::ELF
+        Entry.new(kind: library ? :library : :file, content: digest).freeze
+      end
+
+      # [the first four bytes, the SHA256] of a tar entry; an ELF file's
+      # (a program, a plugin, a Ruby extension) without its debug links and
+      # build id (ElfFile::DEBUG_LINKS), held in memory up to ELF_IN_MEMORY
+      # (beyond that its bytes as they are: it then differs, safely).
+      def digest(tar)
         digest = Digest::SHA256.new
-        head = nil
+        first = tar.read(1 << 20) || ""
+        head = first[0, 4]
+        if head == ElfFile::MAGIC && tar.header.size <= ELF_IN_MEMORY
+          bytes = first.b
+          while (chunk = tar.read(1 << 20))
+            bytes << chunk
+          end
+          return [head, Digest::SHA256.hexdigest(ElfFile.without_debug_links(bytes))]
+        end
+
+        digest << first
         while (chunk = tar.read(1 << 20))
-          head ||= chunk[0, 4]
           digest << chunk
         end
-        library = File.basename(path).match?(Builder::AbiDumper::LIBRARY) && head == Builder::AbiDumper::ELF
-        Entry.new(kind: library ? :library : :file, content: digest.hexdigest).freeze
+        [head, digest.hexdigest]
       end
     end
   end

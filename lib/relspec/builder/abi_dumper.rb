@@ -5,6 +5,7 @@ require "open3"
 require "tmpdir"
 require "zlib"
 require_relative "../error"
+require_relative "dwz_links"
 
 module Relspec
   module Builder
@@ -62,6 +63,7 @@ module Relspec
       def dump(debs, dir, log:)
         Dir.mktmpdir("relspec-abi") do |root|
           debs.sort.each { |deb| @run.call(["dpkg-deb", "-x", deb, root], log: log) }
+          DwzLinks.add(File.join(root, DEBUG_ROOT))
           libraries(root).filter_map { |library| library_dump(library, root, dir, log) } +
             registries(root).map { |registry| keep(registry, dir) }
         end
