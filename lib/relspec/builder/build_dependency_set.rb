@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require "digest"
+require "fileutils"
 require_relative "../error"
 require_relative "../frozen"
 require_relative "../printable"
@@ -40,6 +41,19 @@ module Relspec
       # Build-Depends syntax) with sbuild's own additions, as sbuild would.
       def self.simulate_arguments(depends)
         ["--simulate", "--no-install-recommends", "satisfy", *depends, CORE_DEPENDS]
+      end
+
+      # The command that simulates +depends+ in the chroot unpacked at
+      # +root+ (its sources, lists and dpkg status) with this machine's
+      # apt-get, writing nothing there: the lower layer is shared by every
+      # build of the run. apt writes its cache and its solver's log
+      # (eipp.log.xz, even when simulating) into +scratch+ instead, an empty
+      # folder of the caller's.
+      def self.simulate_command(root, scratch, depends)
+        cache = File.join(scratch, "cache")
+        FileUtils.mkdir_p(File.join(cache, "archives", "partial"))
+        ["apt-get", "-o", "Dir=#{root}/", "-o", "Dir::Cache=#{cache}", "-o", "Dir::Log=#{scratch}",
+         "-o", "Debug::NoLocking=1", *simulate_arguments(depends)]
       end
 
       # The set in +output+, apt-get --simulate's (+source+ names where it
