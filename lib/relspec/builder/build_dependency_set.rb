@@ -48,12 +48,12 @@ module Relspec
       # apt-get, writing nothing there: the lower layer is shared by every
       # build of the run. apt writes its cache and its solver's log
       # (eipp.log.xz, even when simulating) into +scratch+ instead, an empty
-      # folder of the caller's.
-      def self.simulate_command(root, scratch, depends)
+      # folder of the caller's. +options+: more of apt-get's (more sources).
+      def self.simulate_command(root, scratch, depends, options = [])
         cache = File.join(scratch, "cache")
         FileUtils.mkdir_p(File.join(cache, "archives", "partial"))
         ["apt-get", "-o", "Dir=#{root}/", "-o", "Dir::Cache=#{cache}", "-o", "Dir::Log=#{scratch}",
-         "-o", "Debug::NoLocking=1", *simulate_arguments(depends)]
+         "-o", "Debug::NoLocking=1", *options, *simulate_arguments(depends)]
       end
 
       # The set in +output+, apt-get --simulate's (+source+ names where it
