@@ -4,6 +4,7 @@ require "fileutils"
 require "tmpdir"
 require_relative "../apt/deb822"
 require_relative "../error"
+require_relative "apt_cache"
 require_relative "build_dependency_set"
 require_relative "deb_index"
 
@@ -27,6 +28,8 @@ module Relspec
       # where the layer's install sees the build's own .debs (empty in a
       # Debian chroot, so binding onto it writes nothing into the layer)
       DEBS = "/mnt"
+      # where it sees the target's kept .debs (AptCache; empty in a Debian chroot too)
+      KEPT = "/srv"
 
       # +folder+: the run's folder of the target's layers (ChrootLayers);
       # +namespace+: unshare's options for the chroot's root
@@ -123,17 +126,23 @@ module Relspec
         nil
       end
 
+      # Installs in the layer as the chroot's root, as sbuild would; the
+      # target's kept .debs (AptCache) bound at KEPT and linked into the
+      # layer's own archives (apt locks its archives: two layers made at
+      # once must not share them), those apt downloaded kept, and the
+      # archives emptied: the layer holds the installed packages only.
       def install_command(lower, upper, work, merged, index, set)
         mounts = 'mount -t overlay overlay -o "lowerdir=$1,upperdir=$2,workdir=$3" "$4" && ' \
                  "mount --bind \"$5\" \"$4#{DEBS}\" && " \
-                 '{ [ -z "$6" ] || mount --bind "$6" "$4/var/cache/apt/archives"; } && shift 6 && exec "$@"'
+                 "{ [ -z \"$6\" ] || mount --bind \"$6\" \"$4#{KEPT}\"; } && shift 6 && exec \"$@\""
         devices = "for f in null zero full random urandom; do mount -o bind \"/dev/$f\" \"$1/dev/$f\" || exit 1; done"
-        install = ["apt-get", "install", "--yes", "--no-install-recommends", "-o", "Dpkg::Options::=--force-confold",
-                   *set.packages.map { |package| argument(package, index) }]
+        install = "DEBIAN_FRONTEND=noninteractive apt-get install --yes --no-install-recommends " \
+                  '-o Dpkg::Options::=--force-confold "$@"'
+        install = "#{AptCache.link_script(KEPT)} && #{install} && #{AptCache.keep_script(KEPT)}" if @archives
         ["unshare", "--mount", "--propagation", "private", "--", "sh", "-c", mounts, "sh", lower, upper, work, merged,
          index.dir, @archives.to_s, *@namespace, "--mount", "--pid", "--fork", "--", "sh", "-c",
-         "#{devices} && mount -t proc proc \"$1/proc\" && shift && DEBIAN_FRONTEND=noninteractive exec chroot \"$@\"",
-         "sh", merged, merged, *install]
+         "#{devices} && mount -t proc proc \"$1/proc\" && exec chroot \"$@\"", "sh", merged,
+         "sh", "-c", "#{install} && apt-get clean", "sh", *set.packages.map { |package| argument(package, index) }]
       end
 
       # apt-get install's argument for exactly +package+: the build's own

@@ -62,7 +62,12 @@ RSpec.describe Relspec::Builder::DependencyLayers do
     expect(apt.installs.size).to eq(3)
     # exactly the set, by name and version (an architecture-independent package as apt names it)
     expect(apt.installs.first.last(2)).to eq(["cmake=3.25.1-1", "rel-base=2:1.0-1"])
-    expect(apt.installs.first).to include("/run/lower", "--no-install-recommends")
+    expect(apt.installs.first).to include("/run/lower")
+    # chroot into the layer's merged folder runs the install script
+    command = apt.installs.first
+    at = command.index { |part| part.include?('exec chroot "$@"') }
+    expect(command[at + 1, 4]).to eq(["sh", File.join(File.dirname(found[0]), "merged"), "sh", "-c"])
+    expect(apt.installs.first.join(" ")).to include("apt-get install --yes --no-install-recommends")
     expect(File.read(File.join(@dir, "b.log"))).to match(/^relspec: build-dependency layer \h{16} \(2 packages\) in /)
     # the simulation's scratch folders are gone
     expect(Dir.children(@dir).grep(/\Adeps-/).size).to eq(3)
