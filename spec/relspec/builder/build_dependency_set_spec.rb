@@ -30,10 +30,16 @@ RSpec.describe Relspec::Builder::BuildDependencySet do
     described_class.from_simulation(output, source: "test")
   end
 
-  it "is exactly what apt installs for the Build-Depends and sbuild's own, and changes with a version" do
+  # A repository with what sbuild adds to every build.
+  def core_repository
     repository = AptRepositoryBuilder.new(File.join(@dir, "repo"), codenames: %w[bookworm], architectures: %w[amd64])
     repository.add("build-essential", "12.9", codename: "bookworm", arch: "amd64")
     repository.add("fakeroot", "1.31-1.2", codename: "bookworm", arch: "amd64")
+    repository
+  end
+
+  it "is exactly what apt installs for the Build-Depends and sbuild's own, and changes with a version" do
+    repository = core_repository
     repository.add("rel-base", "2:0.5~rc1-1", codename: "bookworm", arch: "all")
     repository.add("rel-cmake", "1.0-1", codename: "bookworm", arch: "amd64", depends: "rel-base")
     repository.add("rel-unused", "1", codename: "bookworm", arch: "all")
@@ -71,9 +77,7 @@ RSpec.describe Relspec::Builder::BuildDependencySet do
   end
 
   it "simulates in an unpacked chroot with this machine's apt-get, writing nothing into it" do
-    repository = AptRepositoryBuilder.new(File.join(@dir, "repo"), codenames: %w[bookworm], architectures: %w[amd64])
-    repository.add("build-essential", "12.9", codename: "bookworm", arch: "amd64")
-    repository.add("fakeroot", "1.31-1.2", codename: "bookworm", arch: "amd64")
+    repository = core_repository
     repository.add("rel-cmake", "1.0-1", codename: "bookworm", arch: "amd64")
     root = unpacked_root(repository)
     before = tree(root)
