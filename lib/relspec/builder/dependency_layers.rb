@@ -54,7 +54,9 @@ module Relspec
         Dir.mktmpdir("resolve-", @folder) do |scratch|
           index = DebIndex.new(scratch, debs(request))
           set = resolve(tool, request, lower, index, scratch)
-          next nil if set.nil? || set.empty?
+          next nil if set.nil?
+          # all in the chroot already: nothing to lay under the build
+          next say(request.log, "no build-dependency layer: none to install") if set.empty?
 
           layer(tool, request, lower, index, set)
         end
@@ -73,7 +75,13 @@ module Relspec
       end
 
       def note(log, what, set)
-        File.open(log, "a") { |file| file.puts("relspec: build-dependency layer #{set.key[0, 16]} (#{set.packages.size} packages) #{what}") }
+        say(log, "build-dependency layer #{set.key[0, 16]} (#{set.packages.size} packages) #{what}")
+      end
+
+      # Writes +text+ into the build's log; nil.
+      def say(log, text)
+        File.open(log, "a") { |file| file.puts("relspec: #{text}") }
+        nil
       end
 
       # The .debs the build is given (sbuild's --extra-package).
@@ -98,8 +106,7 @@ module Relspec
         BuildDependencySet.from_simulation(File.read(output), source: request.source)
       rescue BuildError, SystemCallError, Apt::Deb822::ParseError => e
         # sbuild resolves them itself and says what is wrong
-        File.open(request.log, "a") { |file| file.puts("relspec: no build-dependency layer: #{e.message}") }
-        nil
+        say(request.log, "no build-dependency layer: #{e.message}")
       end
 
       # The .dsc's build-dependency fields (sbuild builds with --arch-all).

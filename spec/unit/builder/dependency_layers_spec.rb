@@ -92,6 +92,7 @@ RSpec.describe Relspec::Builder::DependencyLayers do
     apt = tool.new({ "a" => cmake, "e" => "", "f" => "Inst rel-x (1;x localhost [all])\n" })
     expect(layers.for(apt, request("a", repositories: [remote]), "/run/lower")).to be_nil
     expect(layers.for(apt, request("e"), "/run/lower")).to be_nil
+    expect(File.read(File.join(@dir, "e.log"))).to eq("relspec: no build-dependency layer: none to install\n")
     expect(layers.for(apt, request("f"), "/run/lower")).to be_nil
     expect(File.read(File.join(@dir, "f.log"))).to include('relspec: no build-dependency layer: f: apt would install a package with the version "1;x"')
     expect(apt.installs).to be_empty
