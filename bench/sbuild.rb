@@ -28,6 +28,7 @@
 # root (mounting an overlay); as another user the new way is the old one.
 #
 #   bundle exec ruby bench/sbuild.rb
+#   BENCH_CMAKE=1 BENCH_ROUNDS=1 bundle exec ruby bench/sbuild.rb   (packages with a build-dependency set)
 require "open3"
 require "rbconfig"
 require "tmpdir"
@@ -129,7 +130,11 @@ ROUNDS = Integer(ENV.fetch("BENCH_ROUNDS", "2"), 10)
 
 Dir.mktmpdir("relspec-bench-sbuild") do |dir|
   release = BuildRelease.new(dir, "sbench")
-  PACKAGES.each { |package| release.package(package) }
+  # BENCH_CMAKE=1: two CMake packages instead, whose build-dependencies
+  # (cmake, ruby-dev: 40 packages) are not in the chroot
+  cmake = { cmake: "enable_language(CXX)\nadd_executable(hello hello.cpp)",
+            files: { "hello.cpp" => "int main() { return 0; }\n" } }
+  PACKAGES.each { |package| release.package(package, **(ENV["BENCH_CMAKE"] == "1" ? cmake : {})) }
   release.compile
   build = %w[build specs/sbench.yml --out out --quiet --rebuild --jobs 1 --backend]
   prepare = relspec(dir, "build", "specs/sbench.yml", "--out", "out", "--quiet", "--prepare")
