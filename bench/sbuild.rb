@@ -9,20 +9,26 @@
 #    RELSPEC_APT_CACHE=off: the tarball unpacked in every build, every
 #    build-dependency downloaded) and the new way (the chroot unpacked once
 #    per run, a throw-away overlay layer per build, downloads kept per
-#    target), alternating BENCH_ROUNDS times (default 2): each package's
-#    recorded duration and the sbuild/host ratio.
+#    target), alternating BENCH_ROUNDS times (default 2), and the new way
+#    without the build-dependency layers (RELSPEC_DEPENDENCY_LAYERS=off;
+#    the two packages declare the same Build-Depends, so with them the
+#    second builds on the first's layer): each package's recorded duration
+#    and the sbuild/host ratio.
 # 2. sbuild alone, each line of its output timestamped, its phases (its
 #    section banners) in a table with the total's ratio to the host
 #    backend: the old command line as the backend ran it, then the same
 #    build on a layer over the chroot unpacked once (ChrootLayers, with its
 #    configuration: no apt-get update, nothing purged), without and with
-#    the kept .debs, alternating as well.
+#    the kept .debs, and on a layer over the build-dependency layer of its
+#    exact set (DependencyLayers; resolving the set, and making the layer
+#    the first time, timed apart), alternating as well.
 #
 # The chroot tarball lives in relspec's cache (XDG_CACHE_HOME): made by the
 # first --prepare when missing, and timed separately then. The layers need
 # root (mounting an overlay); as another user the new way is the old one.
 #
 #   bundle exec ruby bench/sbuild.rb
+#   BENCH_CMAKE=1 BENCH_ROUNDS=1 bundle exec ruby bench/sbuild.rb   (packages with a build-dependency set)
 require "open3"
 require "rbconfig"
 require "tmpdir"
@@ -33,6 +39,8 @@ $LOAD_PATH.unshift(File.expand_path("../lib", __dir__))
 require "relspec/builder/apt_cache"
 require "relspec/builder/chroot"
 require "relspec/builder/chroot_layers"
+require "relspec/builder/dependency_layers"
+require "relspec/builder/request"
 require "relspec/builder/sbuild_backend"
 require "relspec/builder/tool"
 require "relspec/builder/unpack_dir"
@@ -115,13 +123,18 @@ end
 
 PACKAGES = %w[base/small base/small2].freeze
 OLD = { "RELSPEC_CHROOT_LAYERS" => "off", "RELSPEC_APT_CACHE" => "off" }.freeze
+NO_DEPENDENCY_LAYERS = { "RELSPEC_DEPENDENCY_LAYERS" => "off" }.freeze
 # old and new alternate, this many times each: the load of a shared machine
 # moves within a run
 ROUNDS = Integer(ENV.fetch("BENCH_ROUNDS", "2"), 10)
 
 Dir.mktmpdir("relspec-bench-sbuild") do |dir|
   release = BuildRelease.new(dir, "sbench")
-  PACKAGES.each { |package| release.package(package) }
+  # BENCH_CMAKE=1: two CMake packages instead, whose build-dependencies
+  # (cmake, ruby-dev: 40 packages) are not in the chroot
+  cmake = { cmake: "enable_language(CXX)\nadd_executable(hello hello.cpp)",
+            files: { "hello.cpp" => "int main() { return 0; }\n" } }
+  PACKAGES.each { |package| release.package(package, **(ENV["BENCH_CMAKE"] == "1" ? cmake : {})) }
   release.compile
   build = %w[build specs/sbench.yml --out out --quiet --rebuild --jobs 1 --backend]
   prepare = relspec(dir, "build", "specs/sbench.yml", "--out", "out", "--quiet", "--prepare")
@@ -136,11 +149,14 @@ Dir.mktmpdir("relspec-bench-sbuild") do |dir|
     relspec(dir, *build, "sbuild", env: OLD)
     before = durations(release, PACKAGES)
     command ||= old_command(release, PACKAGES.first)
+    relspec(dir, *build, "sbuild", env: NO_DEPENDENCY_LAYERS)
+    layered = durations(release, PACKAGES)
     relspec(dir, *build, "sbuild")
     after = durations(release, PACKAGES)
     report("host backend", host, [host])
     report("sbuild before: tarball per build, no kept .debs", host, before)
-    report("sbuild after: layers (one unpack per run), kept .debs", host, after)
+    report("sbuild layers (one unpack per run), kept .debs", host, layered)
+    report("sbuild after: the same, build-dependency layers", host, after)
   end
 
   unpack_dir = Relspec::Builder::UnpackDir.new
@@ -157,12 +173,28 @@ Dir.mktmpdir("relspec-bench-sbuild") do |dir|
   apt = Relspec::Builder::AptCache.from_environment
   puts format("sbuild alone, its phases (seconds; the chroot unpacked and its lists refreshed once in %.1f s; " \
               "ratio to the last host build, %.1f s):", unpacked, host)
+  target = Relspec::Target.new("bookworm", "amd64")
+  dependency_layers = Relspec::Builder::DependencyLayers.new(layers.folder, namespace: layers.namespace, arch: "amd64",
+                                                                            owner: [ids[0].first, ids[1].first],
+                                                                            archives: apt&.target_folder(target))
+  request = Relspec::Builder::Request.new(source: "bench", dsc: command.last, target: target, repositories: [],
+                                          local_debs: [], log: File.join(dir, "deps.log"))
   ROUNDS.times do |round|
     puts format(" round %d, load average %s", round + 1, load_average)
     header
     row("before#{tmpfs.empty? ? ' (no room on tmpfs)' : ', chroot on tmpfs'}", host, *timed_sbuild(command, tmpfs))
     row("after: layer", host, *timed_layered(command, layers, lower, unpack_dir, nil))
     row("after: layer, kept .debs", host, *timed_layered(command, layers, lower, unpack_dir, apt)) if apt
+    deps = nil
+    resolved = Timing.seconds { deps = dependency_layers.for(Relspec::Builder::Tool.new, request, lower) }
+    unless deps
+      puts format("| after: build-dependency layer: none (resolved in %.1f s; %s) |", resolved,
+                  File.read(request.log).lines.grep(/^relspec: /).last&.chomp)
+      next
+    end
+
+    row(format("after: build-dependency layer (resolved%s in %.1f s)", round.zero? ? " and made" : "", resolved), host,
+        *timed_layered(command, layers, "#{deps}:#{lower}", unpack_dir, apt))
   end
   unpack_dir.close
 end

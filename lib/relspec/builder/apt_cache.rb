@@ -92,8 +92,6 @@ module Relspec
          "push @{$external_commands->{'starting-build-commands'}}, #{BuildUserFolder.perl(AptCache.keep_script)};"]
       end
 
-      private
-
       # The target's folder, made for the build user once.
       def target_folder(target)
         prepare

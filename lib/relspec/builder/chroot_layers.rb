@@ -53,6 +53,9 @@ module Relspec
         check_path(folder)
       end
 
+      # the run's folder of the target's layers
+      attr_reader :folder, :uids, :gids
+
       # The empty tarball sbuild is given (it unpacks it into its folder).
       def empty_tarball
         path = File.join(@folder, "empty.tar")
@@ -83,7 +86,8 @@ module Relspec
       end
 
       # The command that runs +command+ (sbuild's) with the overlay of
-      # +upper+, +work+ and +merged+ over +lower+ mounted.
+      # +upper+, +work+ and +merged+ over +lower+ mounted (folders joined by
+      # ':', the uppermost first: a build-dependency layer over the lower one).
       def wrap(command, lower, upper, work, merged)
         ["unshare", "--mount", "--propagation", "private", "--", "sh", "-c",
          'mount -t overlay overlay -o "lowerdir=$1,upperdir=$2,workdir=$3" "$4" && shift 4 && exec "$@"',
@@ -104,6 +108,12 @@ module Relspec
         ["unshift @{$unshare_bind_mounts}, { directory => #{BuildUserFolder.perl(merged)}, mountpoint => '#{ROOT}' };",
          "$apt_update = 0;", "$purge_build_directory = 'never';", "$purge_session = 'never';",
          "$unshare_tmpdir_template = #{BuildUserFolder.perl(session)};"]
+      end
+
+      # unshare's options for a user namespace with sbuild's mapping, root in it
+      def namespace
+        ["unshare", "--user", "--map-users=#{@uids[0]},0,#{@uids[1]}", "--map-groups=#{@gids[0]},0,#{@gids[1]}",
+         "--setuid", "0", "--setgid", "0"]
       end
 
       private
@@ -128,12 +138,6 @@ module Relspec
         [*namespace, "--mount", "--pid", "--fork", "--", "sh", "-c",
          "#{devices} && mount -t proc proc \"$1/proc\" && cat /etc/resolv.conf > \"$1/etc/resolv.conf\" && " \
          "exec chroot \"$1\" apt-get -o Acquire::Languages=none update", "sh", lower]
-      end
-
-      # unshare's options for a user namespace with sbuild's mapping, root in it
-      def namespace
-        ["unshare", "--user", "--map-users=#{@uids[0]},0,#{@uids[1]}", "--map-groups=#{@gids[0]},0,#{@gids[1]}",
-         "--setuid", "0", "--setgid", "0"]
       end
 
       def unpack_command(lower)

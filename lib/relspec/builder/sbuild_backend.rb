@@ -7,6 +7,7 @@ require_relative "apt_cache"
 require_relative "ccache"
 require_relative "chroot"
 require_relative "chroot_layers"
+require_relative "dependency_layers"
 require_relative "../error"
 require_relative "produced_files"
 require_relative "shell_line"
@@ -39,10 +40,14 @@ module Relspec
       # the chroot's users to, to build on the target's chroot unpacked once
       # (ChrootLayers; root only), nil to unpack it in every build (or a
       # lambda returning either: read at the first local build, as a Slurm
-      # submit host builds nothing here and may have no subordinate ids).
+      # submit host builds nothing here and may have no subordinate ids);
+      # +dependency_layers+: builds on layers share a layer of their exact
+      # build-dependency set (DependencyLayers; RELSPEC_DEPENDENCY_LAYERS=off
+      # for none, as a bench does to compare).
       def initialize(tool, distributions, chroot_cache: nil, unpack_dir: UnpackDir.new,
                      ccache: Ccache.from_environment, apt_cache: AptCache.from_environment,
-                     layer_ids: -> { SbuildBackend.layer_ids })
+                     layer_ids: -> { SbuildBackend.layer_ids },
+                     dependency_layers: ENV["RELSPEC_DEPENDENCY_LAYERS"] != "off")
         @tool = tool
         @distributions = distributions
         @chroot_cache = chroot_cache
@@ -50,6 +55,8 @@ module Relspec
         @ccache = ccache
         @apt_cache = apt_cache
         @layer_ids = layer_ids
+        @dependency_layers = dependency_layers
+        @dependencies = {}
         @chroots = {}
         @layers = {}
         @lock = Mutex.new
@@ -130,6 +137,8 @@ module Relspec
       # Runs sbuild on a layer of its own over the target's unpacked chroot.
       def run_layered(layers, request, work)
         lower = layers.lower(@tool, request.source, request.log)
+        deps = dependencies(request.target, layers)&.for(@tool, request, lower)
+        lower = "#{deps}:#{lower}" if deps
         layers.layer do |upper, overlay_work, merged|
           command = layers.wrap(command(request, work, layers.empty_tarball), lower, upper, overlay_work, merged)
           run(request, work, command, layers.config_lines(merged))
@@ -144,6 +153,18 @@ module Relspec
 
           @layers[target.to_s] ||= ChrootLayers.new(chroot(target).path, @unpack_dir.folder(target.dir_name),
                                                     uids: @layer_ids[0], gids: @layer_ids[1])
+        end
+      end
+
+      # The target's DependencyLayers, nil when builds install their own.
+      def dependencies(target, layers)
+        return nil unless @dependency_layers
+
+        @lock.synchronize do
+          @dependencies[target.to_s] ||=
+            DependencyLayers.new(layers.folder, namespace: layers.namespace, arch: target.arch,
+                                                owner: [layers.uids.first, layers.gids.first],
+                                                archives: @apt_cache&.target_folder(target))
         end
       end
 

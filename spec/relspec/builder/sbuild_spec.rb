@@ -41,6 +41,9 @@ RSpec.describe "relspec build --backend sbuild", order: :defined do
     # over the same unpacked chroot; base/two, after base/one, must not see
     # the file base/one's build left in its chroot's /tmp (nor base/three's)
     @release.package("base/three", cmake: "#{hello}#{mark['three']}", files: cpp)
+    # base/four declares exactly base/three's Build-Depends: one of them
+    # installs them into a build-dependency layer, the other builds on it
+    @release.package("base/four", cmake: "#{hello}#{mark['four']}", files: cpp)
     unseen = "\nif(#{chroot} AND (EXISTS /tmp/relspec-one-was-here OR EXISTS /tmp/relspec-three-was-here))\n  " \
              "message(FATAL_ERROR \"another build's file\")\nendif()"
     # the language first: FindRuby finds no library in a project without one
@@ -68,7 +71,7 @@ RSpec.describe "relspec build --backend sbuild", order: :defined do
     expect(File.size(chroot)).to be > 10_000_000
     results = YAML.safe_load(File.read(File.join(@release.target_dir, "build-results.yml")))
     expect(results.fetch("backend")).to eq("sbuild")
-    expect(results.fetch("packages").values.map { |record| record["status"] }).to eq(%w[built built built])
+    expect(results.fetch("packages").values.map { |record| record["status"] }).to eq(%w[built built built built])
     two = File.read(File.join(@release.target_dir, "logs", "#{@release.source('base/two')}.log"))
     expect(two).to include("--chroot-mode=unshare", "--extra-package=", "#{@release.source('base/one')}_")
     # sbuild installed the build-dependency built a moment ago in the chroot,
@@ -86,25 +89,40 @@ RSpec.describe "relspec build --backend sbuild", order: :defined do
     # whichever started first), and each build runs on a layer of its own
     # over it: base/two installed pkg-config again (above), so base/one's
     # did not reach it, nor did the files base/one and base/three left.
-    one, three = %w[base/one base/three].map do |package|
+    one, three, four = %w[base/one base/three base/four].map do |package|
       File.read(File.join(@release.target_dir, "logs", "#{@release.source(package)}.log"))
     end
     if Process.uid.zero?
       unpacking = "$ unshare --user --map-users="
-      expect([one, two, three].map { |log| log.include?(unpacking) }.count(true)).to eq(1)
+      expect([one, two, three, four].map { |log| log.include?(unpacking) }.count(true)).to eq(1)
       expect(two).not_to include(unpacking)
       expect(two).to match(/^\$ unshare --mount --propagation private -- .* sbuild .*--chroot=\S+empty\.tar /)
       expect(two).not_to include("bookworm-amd64.tar.zst")
       # apt's lists refreshed once in the lower layer (with the unpacking),
       # not in every build; the layer goes as a whole, sbuild removes nothing
       refresh = "chroot \"$1\" apt-get -o Acquire::Languages=none update"
-      expect([one, two, three].map { |log| log.include?(refresh) }.count(true)).to eq(1)
-      expect([one, two, three]).to all(satisfy { |log| !log.include?("| Update chroot") && log.include?("Keeping session: ") })
+      expect([one, two, three, four].map { |log| log.include?(refresh) }.count(true)).to eq(1)
+      expect([one, two, three, four]).to all(satisfy { |log| !log.include?("| Update chroot") && log.include?("Keeping session: ") })
 
-      # The .debs base/one downloaded (cmake) are kept for the target and
-      # base/two takes them from there.
+      # Build-dependency layers by exact set: base/three and base/four share
+      # one (made by whichever came first, the other waited for it), base/one
+      # and base/two have sets of their own; sbuild found the set installed
+      # and unpacked only its dummy package.
+      key = /^relspec: build-dependency layer (\h{16}) \(\d+ packages\) in /
+      keys = [one, two, three, four].map { |log| log[key, 1] }
+      expect(keys).to all(be_a(String))
+      expect(keys[2]).to eq(keys[3])
+      expect(keys.uniq.size).to eq(3)
+      installing = /^\$ unshare --mount .* apt-get install --yes --no-install-recommends /
+      expect([one, two, three, four].map { |log| log.match?(installing) }.count(true)).to eq(3)
+      user = [three, four].find { |log| !log.match?(installing) }
+      expect(user).to match(/^Unpacking sbuild-build-depends-main-dummy /)
+      expect(user).not_to match(/^Unpacking cmake /)
+
+      # The .debs downloaded (cmake) are kept for the target and base/two's
+      # layer, made after base/one's, takes them from there.
       cmake = %r{^Get:\d+ http\S+ bookworm/main amd64 cmake amd64 }
-      expect(one).to match(cmake)
+      expect([one, three, four].map { |log| log.match?(cmake) }).to include(true)
       expect(two).to match(/^(Unpacking|Preparing to unpack) .*cmake_/)
       expect(two).not_to match(cmake)
       expect(Dir.children(File.join(CliRunner::APT_CACHE, "bookworm-amd64"))).to include(a_string_matching(/\Acmake_.*\.deb\z/))
@@ -128,7 +146,7 @@ RSpec.describe "relspec build --backend sbuild", order: :defined do
 
     # Another backend's builds are not reused: host builds both again.
     host = relspec("build", "specs/sb.yml", "--out", "out", "--backend", "host", chdir: @dir)
-    expect(host.stdout).to include("bookworm/amd64: 3 built, 0 already built")
+    expect(host.stdout).to include("bookworm/amd64: 4 built, 0 already built")
   end
 
   it "says which setting provides a mirror when a chroot cannot be made" do

@@ -78,7 +78,7 @@ RSpec.describe Relspec::Builder::SbuildBackend do
       end.new(folders)
       ids = [[Process.uid, 1], [Process.gid, 1]]
       backend = described_class.new(tool, {}, chroot_cache: cache, unpack_dir: unpack, ccache: nil, apt_cache: nil,
-                                              layer_ids: ids)
+                                              layer_ids: ids, dependency_layers: false)
       allow(Relspec::Builder::Chroot).to receive(:host_arch).and_return("amd64")
       2.times do |index|
         request = Relspec::Builder::Request.new(source: "rock-r-#{index}", version: "1.0-1", dsc: "/in/r_1.0-1.dsc",

@@ -1,0 +1,107 @@
+# frozen_string_literal: true
+
+require_relative "../unit_helper"
+require "tmpdir"
+require "relspec/builder/dependency_layers"
+require "relspec/builder/request"
+
+# Which builds share a build-dependency layer. The tool stands in for apt
+# here, answering each simulation with the Inst lines a test gives per .dsc
+# (apt resolves for real in spec/relspec/builder/build_dependency_set_spec.rb,
+# the layers are made and used in spec/relspec/builder/sbuild_spec.rb).
+RSpec.describe Relspec::Builder::DependencyLayers do
+  around do |example|
+    Dir.mktmpdir("dependency-layers-unit") { |dir| @dir = dir and example.run }
+  end
+
+  # apt's answers: .dsc => Inst lines; installs: the install commands run
+  let(:tool) do
+    Class.new do
+      attr_reader :installs
+
+      def initialize(answers, fail_install: false)
+        @answers = answers
+        @installs = []
+        @fail_install = fail_install
+      end
+
+      def run(source, command, log:, name:, **)
+        case name
+        when "indexing the build's .debs" then File.write(File.join(command[4], "Packages"), "")
+        when "resolving the build-dependencies" then File.write(log, @answers.fetch(source))
+        when "installing the build-dependency layer"
+          @installs << command
+          raise Relspec::BuildError, "#{source}: apt failed" if @fail_install
+        end
+      end
+    end
+  end
+
+  def layers
+    described_class.new(@dir, namespace: %w[unshare --user], archives: nil, arch: "amd64", owner: [Process.uid, Process.gid])
+  end
+
+  def request(source, repositories: [])
+    dsc = File.join(@dir, "#{source}.dsc")
+    File.write(dsc, "Source: #{source}\nBuild-Depends: debhelper-compat (= 13),\n cmake\n")
+    Relspec::Builder::Request.new(source: source, version: "1", dsc: dsc, target: Relspec::Target.new("bookworm", "amd64"),
+                                  repositories: repositories, local_debs: [], output_dir: @dir,
+                                  log: File.join(@dir, "#{source}.log"))
+  end
+
+  cmake = "Inst cmake (3.25.1-1 Debian:12.11/stable [amd64])\n"
+  base = "Inst rel-base (2:1.0-1 localhost [all])\n"
+
+  it "makes a layer per exact set, once, and gives it to every build of that set only" do
+    apt = tool.new({ "a" => cmake + base, "b" => base + cmake, "c" => cmake, "d" => cmake.sub("3.25.1-1", "3.25.1-2") + base })
+    dependency_layers = layers
+    found = %w[a b c d].map { |source| dependency_layers.for(apt, request(source), "/run/lower") }
+    expect(found[0]).to eq(found[1])
+    expect(found.uniq.size).to eq(3)
+    expect(found).to all(satisfy { |dir| File.basename(dir) == "upper" && File.directory?(dir) })
+    expect(apt.installs.size).to eq(3)
+    # exactly the set, by name and version (an architecture-independent package as apt names it)
+    expect(apt.installs.first.last(2)).to eq(["cmake=3.25.1-1", "rel-base=2:1.0-1"])
+    expect(apt.installs.first).to include("/run/lower")
+    # chroot into the layer's merged folder runs the install script
+    command = apt.installs.first
+    at = command.index { |part| part.include?('exec chroot "$@"') }
+    expect(command[at + 1, 4]).to eq(["sh", File.join(File.dirname(found[0]), "merged"), "sh", "-c"])
+    expect(apt.installs.first.join(" ")).to include("apt-get install --yes --no-install-recommends")
+    expect(File.read(File.join(@dir, "b.log"))).to match(/^relspec: build-dependency layer \h{16} \(2 packages\) in /)
+    # the simulation's scratch folders are gone
+    expect(Dir.children(@dir).grep(/\Adeps-/).size).to eq(3)
+  end
+
+  it "resolves the .dsc's Build-Depends, each field on one line" do
+    apt = tool.new({ "a" => cmake })
+    layers.for(apt, request("a"), "/run/lower")
+    expect(apt.installs.size).to eq(1)
+    seen = []
+    apt.define_singleton_method(:run) do |_source, command, **options|
+      seen << command if options[:name] == "resolving the build-dependencies"
+      File.write(options[:log], "") if options[:name] == "resolving the build-dependencies"
+      File.write(File.join(command[4], "Packages"), "") if options[:name] == "indexing the build's .debs"
+    end
+    expect(layers.for(apt, request("a"), "/run/lower")).to be_nil
+    expect(seen.first.last(2)).to eq(["debhelper-compat (= 13), cmake", "build-essential, fakeroot"])
+  end
+
+  it "gives none when the set cannot be known here, is empty, or its layer cannot be made (and tries that once)" do
+    remote = Relspec::Builder::Repository.new(uri: "http://example.org/r", suite: "bookworm", components: ["main"])
+    apt = tool.new({ "a" => cmake, "e" => "", "f" => "Inst rel-x (1;x localhost [all])\n" })
+    expect(layers.for(apt, request("a", repositories: [remote]), "/run/lower")).to be_nil
+    expect(layers.for(apt, request("e"), "/run/lower")).to be_nil
+    expect(File.read(File.join(@dir, "e.log"))).to eq("relspec: no build-dependency layer: none to install\n")
+    expect(layers.for(apt, request("f"), "/run/lower")).to be_nil
+    expect(File.read(File.join(@dir, "f.log"))).to include('relspec: no build-dependency layer: f: apt would install a package with the version "1;x"')
+    expect(apt.installs).to be_empty
+
+    failing = tool.new({ "a" => cmake, "b" => cmake }, fail_install: true)
+    dependency_layers = layers
+    expect(%w[a b].map { |source| dependency_layers.for(failing, request(source), "/run/lower") }).to eq([nil, nil])
+    expect(failing.installs.size).to eq(1)
+    expect(File.read(File.join(@dir, "b.log"))).to include("could not be made, sbuild installs them")
+    expect(Dir.children(@dir).grep(/\Adeps-/)).to be_empty
+  end
+end
