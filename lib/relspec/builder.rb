@@ -22,6 +22,8 @@ require_relative "builder/sbuild_backend"
 require_relative "builder/slurm/cluster"
 require_relative "builder/slurm/engine"
 require_relative "builder/slurm/settings"
+require_relative "builder/slurm/run"
+require_relative "builder/slurm/job_evidence"
 
 module Relspec
   # `relspec build`: builds the source packages `relspec compile` wrote,
@@ -69,6 +71,10 @@ module Relspec
       end
 
       def decide(*); end
+
+      def deciding?
+        false
+      end
 
       def keep(_entry); end
 
@@ -172,17 +178,16 @@ module Relspec
         @listener&.start(target, plan.entries.size, done.size)
         local = Mutex.new
         debs = built.flat_map { |entry| debs_of(dir, results[entry.source]) }
-        verdicts = @verdicts.call(results, plan.entries, dir, refused: refused)
+        evidence = slurm? ? job_evidence(plan, target, backend, results, done) : nil
+        verdicts = @verdicts.call(results, plan.entries, dir, refused: refused, replaced: evidence&.replaced&.root)
         cutoff = EarlyCutoff.new(verdicts, plan.entries, kept: kept.map(&:source))
         on_start = ->(entry) { @listener&.building(entry) }
         revoked = {}
         on_done = recorder(results, dir, digests, verdicts, cutoff, revoked, backend)
         outcomes = if slurm?
-                     Slurm::Engine.new(cluster: Slurm::Cluster.new, settings: @slurm_settings, backend: backend,
-                                       notices: @notices)
-                                  .run(plan: plan, target: target, repositories: repositories, done: done,
-                                       done_debs: debs, keep_going: @keep_going, rebuild: @rebuild,
-                                       on_start: on_start, on_done: on_done)
+                     run_slurm(plan, target, backend, evidence, repositories: repositories, done: done, done_debs: debs,
+                                                                on_start: on_start, on_done: on_done, verdicts: verdicts,
+                                                                kept: kept.map(&:source))
                    else
                      build = lambda do |one|
                        files = build_one(plan, one, target, repositories, dir, backend, local.synchronize { debs.dup },
@@ -210,6 +215,24 @@ module Relspec
           results.write(backend: backend.name)
           @listener&.finished(outcome)
         end
+      end
+
+      # The early cutoff's evidence of the run's jobs (Slurm::JobEvidence),
+      # the builds they replace kept first.
+      def job_evidence(plan, target, backend, results, done)
+        dumps = ->(source, files, folder, log) { abi_dumps(source, files, folder, log) }
+        Slurm::JobEvidence.new(Slurm::Run.new(plan, target, backend.name), dumps).tap do |evidence|
+          evidence.keep(plan.entries.reject { |entry| done.include?(entry.source) }.map { |entry| results[entry.source] })
+        end
+      end
+
+      # The Engine over the plan: a candidate's job waits, held, for its
+      # decision (docs/scale-out.md).
+      def run_slurm(plan, target, backend, evidence, **run)
+        Slurm::Engine.new(cluster: Slurm::Cluster.new, settings: @slurm_settings, backend: backend, notices: @notices)
+                     .run(plan: plan, target: target, keep_going: @keep_going, rebuild: @rebuild,
+                          take: evidence.take(run[:verdicts]), **run)
+                     .tap { evidence.drop }
       end
 
       # The entries an earlier run built and kept, reused by this one:
@@ -264,7 +287,7 @@ module Relspec
         staged = StagedResults.new(dir, entry.source)
         request = request_for(plan, entry, target, repositories, debs, dir, staged.prepare)
         files = backend.build(request)
-        files += abi_dumps(request, files)
+        files += abi_dumps(request.source, files, request.output_dir, request.log)
         verdicts.decide(entry, files)
         staged.settle(files)
       end
@@ -278,12 +301,9 @@ module Relspec
       end
 
       # Why the early cutoff keeps nothing in this run, or nil: the
-      # spec's early_cutoff, --rebuild-dependents, the Slurm engine (its
-      # jobs keep no ABI dumps, so no verdict exists to keep by;
-      # docs/scale-out.md).
+      # spec's early_cutoff, --rebuild-dependents.
       def refusal
         return "--rebuild-dependents: every candidate is built" if @rebuild_dependents
-        return "not decided on Slurm: its builds keep no ABI dumps" if slurm?
 
         setting = @effective.early_cutoff
         setting.enabled ? nil : "the early cutoff is off for #{@effective.release}: #{setting.reason}"
@@ -295,7 +315,7 @@ module Relspec
         started = !%i[skipped kept].include?(outcome.status)
         decided = Scheduler::SUCCESSES.include?(outcome.status)
         files = outcome.status == :built ? outcome.value.map { |file| BuildResults::Produced.of(dir, relative(dir, file)) } : []
-        cutoff = decided ? verdicts.cutoff(entry.source) || verdicts.keep(entry) : nil # a Slurm build is decided now
+        cutoff = decided ? verdicts.cutoff(entry.source) || verdicts.keep(entry) : nil
         files = kept_files(results[entry.source], cutoff) if outcome.status == :kept
         results.record(BuildResults::Record.new(
                          source: entry.source, package: entry.package, version: entry.version, dsc_sha256: dsc_sha256,
@@ -313,11 +333,11 @@ module Relspec
         previous && (previous.built? || previous.kept?) && previous.files_version == cutoff.keeps ? previous.files : []
       end
 
-      # The ABI dumps of the libraries the build's .debs ship, beside them
+      # The ABI dumps of the libraries the build's .debs ship, into +dir+
       # (docs/abi.md); recorded with the produced files.
-      def abi_dumps(request, files)
-        run = ->(command, log:) { @tool.run(request.source, command, log: log) }
-        AbiDumper.new(run).dump(files.grep(/\.deb\z/), request.output_dir, log: request.log).map(&:path)
+      def abi_dumps(source, files, dir, log)
+        run = ->(command, log:) { @tool.run(source, command, log: log) }
+        AbiDumper.new(run).dump(files.grep(/\.deb\z/), dir, log: log).map(&:path)
       end
 
       def debs_of(dir, record)

@@ -20,19 +20,23 @@ module Relspec
       # The verdicts of a run building +entries+ (plan entries) over
       # +results+ (BuildResults, as the run found them) in +dir+.
       # +refused+: why the early cutoff keeps nothing in this run (the
-      # spec's early_cutoff, --rebuild-dependents), or nil.
-      def self.of(results, entries, dir, refused: nil)
-        new(entries.to_h { |entry| [entry.source, results[entry.source]] }, dir, entries: entries, refused: refused)
+      # spec's early_cutoff, --rebuild-dependents), or nil. +replaced+:
+      # where the files of the builds replaced are, under their recorded
+      # names (a Slurm job replaces them before relspec takes its build:
+      # Builder::Slurm::ReplacedFiles keeps them there); default +dir+.
+      def self.of(results, entries, dir, refused: nil, replaced: nil)
+        new(entries.to_h { |entry| [entry.source, results[entry.source]] }, dir, entries: entries, refused: refused,
+                                                                                 replaced: replaced)
       end
 
       # +previous+: source => Builder::BuildResults::Record (or nil) before the run;
       # +dir+: the target folder; +compare+: how two dumps are compared;
       # +entries+: the plan's entries (their build_depends give each
       # build's closure, their cutoff the early cutoff's candidates).
-      def initialize(previous, dir, compare: Comparison.method(:compare), entries: [], refused: nil)
+      def initialize(previous, dir, compare: Comparison.method(:compare), entries: [], refused: nil, replaced: nil)
         @previous = previous
         @refused = refused
-        @dir = dir
+        @dir = replaced || dir
         @check = InterfaceCheck.new(compare: compare)
         @entries = entries.to_h { |entry| [entry.source, entry] }
         @verdicts = {}
@@ -47,7 +51,7 @@ module Relspec
       def decide(entry, files)
         previous = @previous[entry.source]
         interface = comparable?(previous, entry) ? interface_of(entry, previous, files) : nil
-        cutoff = entry.cutoff && !cutoff(entry.source) ? cutoff_of(entry) : nil # #keep decides it first
+        cutoff = entry.cutoff && !cutoff(entry.source) ? undecided(entry) : nil # #keep decides it first
         @lock.synchronize do
           @verdicts[entry.source] = interface
           @cutoffs[entry.source] ||= cutoff
@@ -73,6 +77,11 @@ module Relspec
         cutoff = Builder::BuildResults::Cutoff.new(keeps: @entries.fetch(source).cutoff.keeps, verdict: "rebuild",
                                                    reason: reason, evidence: [].freeze).freeze
         @lock.synchronize { @cutoffs[source] = cutoff }
+      end
+
+      # True when the run decides its candidates (the cutoff not refused).
+      def deciding?
+        @refused.nil?
       end
 
       # The verdict decided for +source+ in this run, or nil.
@@ -129,6 +138,12 @@ module Relspec
           found = interface(source)
           "#{source}: #{found.compared} files compared with #{found.against}, unchanged"
         end.freeze
+      end
+
+      # A candidate built before #keep decided it: a Slurm run refusing the
+      # cutoff holds no job for a decision.
+      def undecided(entry)
+        @refused ? refusal(entry) : cutoff_of(entry)
       end
 
       def refusal(entry)

@@ -2,6 +2,7 @@
 
 require "spec_helper"
 require "json"
+require "open3"
 require "yaml"
 require "pathname"
 require "digest"
@@ -224,33 +225,150 @@ RSpec.describe "relspec build --engine slurm", order: :defined do
     FileUtils.rm_rf(File.join(@dir, ".relspec"))
   end
 
-  # docs/scale-out.md, Limits: a job keeps no ABI dumps, so Slurm keeps no
-  # early cutoff candidate (docs/abi.md) and its record says why. base/lib
-  # and base/user published by a local build; a new version of base/lib
-  # makes base/user a candidate.
-  it "builds an early cutoff candidate, recording that Slurm does not decide it" do
-    dir = Dir.mktmpdir("relspec-slurm-cutoff")
-    release = BuildRelease.new(dir, "sc")
-    release.package("base/lib")
-    release.package("base/user", dependencies: ["base/lib"])
-    release.compile(spec: "repository: { path: ../repos/sc, trusted: true }\n")
-    [%w[build --backend host], %w[publish]].each do |command, *options|
-      run = relspec(command, "specs/sc.yml", "--out", "out", *options, chdir: dir)
-      expect(run.exit_code).to eq(0), run.stdout + run.stderr
+  # The early cutoff on Slurm (docs/scale-out.md, "Early cutoff"): the
+  # release of early_cutoff_build_spec.rb (base/lib, a C library; base/user,
+  # which depends on it; base/app on base/user), built and published with
+  # the local engine, then changed and built on the cluster.
+  describe "the early cutoff" do
+    before(:all) do
+      @cut = Dir.mktmpdir("relspec-slurm-cutoff")
+      @cutoff = BuildRelease.new(@cut, "sc")
+      @lib_cmake = "enable_language(C)\nadd_library(cut SHARED cut.c)\n" \
+                   "install(TARGETS cut LIBRARY DESTINATION lib)\ninstall(FILES cut.h DESTINATION include)"
+      @cutoff.package("base/lib", cmake: @lib_cmake, files: { "cut.c" => "#include \"cut.h\"\nint cut_value(void) { return 42; }\n",
+                                                              "cut.h" => "int cut_value(void);\n" })
+      @cutoff.package("base/user", dependencies: ["base/lib"])
+      @cutoff.package("base/app", dependencies: ["base/user"])
+      @cutoff.compile(spec: "repository: { path: ../repos/sc, trusted: true }\n")
+      [%w[build --backend host], %w[publish]].each do |command, *options|
+        run = relspec(command, "specs/sc.yml", "--out", "out", *options, chdir: @cut)
+        raise run.stdout + run.stderr unless run.exit_code.zero?
+      end
+      @first = %w[base/lib base/user base/app].to_h { |package| [package, cutoff_record(package)] }
     end
-    published = results(release)["packages"][release.source("base/user")]["version"]
-    FileUtils.mkdir_p(File.join(dir, "overlays", "base", "lib", "files"))
-    File.write(File.join(dir, "overlays", "base", "lib", "files", "new.txt"), "a new version of base/lib\n")
-    expect(relspec("compile", "specs/sc.yml", "--out", "out", chdir: dir).exit_code).to eq(0)
 
-    run = build(dir: dir, spec: "specs/sc.yml")
-    expect(run.exit_code).to eq(0), run.stdout + run.stderr + @cluster.logs
-    user = results(release)["packages"][release.source("base/user")]
-    expect(user["status"]).to eq("built")
-    expect(user["cutoff"]).to eq("keeps" => published, "verdict" => "rebuild",
-                                 "reason" => "not decided on Slurm: its builds keep no ABI dumps")
-  ensure
-    FileUtils.rm_rf(dir) if dir
+    after(:all) { FileUtils.rm_rf(@cut) if @cut }
+
+    def cutoff_record(package)
+      results(@cutoff)["packages"][@cutoff.source(package)]
+    end
+
+    def change(path, content, package: "base/lib")
+      overlay = File.join(@cut, "overlays", package, "files", path)
+      FileUtils.mkdir_p(File.dirname(overlay))
+      File.write(overlay, content)
+    end
+
+    def cut!(*args)
+      run = relspec(*args, "specs/sc.yml", "--out", "out", chdir: @cut)
+      raise run.stdout + run.stderr unless run.exit_code.zero?
+
+      run
+    end
+
+    def slurm_build(*args)
+      build(*args, dir: @cut, spec: "specs/sc.yml").tap do |run|
+        expect(run.exit_code).to eq(0), run.stdout + run.stderr + @cluster.logs
+      end
+    end
+
+    def published
+      output, status = Open3.capture2e("reprepro", "-b", File.join(@cut, "repos", "sc"), "list", "bookworm")
+      raise output unless status.success?
+
+      output.lines.to_h { |line| line.split(": ", 2).last.split }
+    end
+
+    def cutoff_jobs(package)
+      jobs_named(%r{\Asc/bookworm-amd64/#{Regexp.escape(@cutoff.source(package))}@})
+    end
+
+    # A relspec killed while base/lib's job runs leaves base/user's job
+    # held; the one run again adopts it, decides it and cancels it.
+    it "keeps the dependents of a body-only change unbuilt, cancelling their held jobs, also when adopted" do
+      lib, user = %w[base/lib base/user].map { |package| @cutoff.source(package) }
+      change("cut.c", "#include \"cut.h\"\nint cut_value(void) { return 43; }\n")
+      change("CMakeLists.txt", "cmake_minimum_required(VERSION 3.10)\nproject(p NONE)\n#{@lib_cmake}\n" \
+                               "install(FILES base-lib.txt DESTINATION share)\nexecute_process(COMMAND sleep 4)\n")
+      cut!("compile")
+      env, *command = @cluster.relspec_command("build", "specs/sc.yml", "--out", "out", "--backend", "host",
+                                               "--engine", "slurm", "--slurm", "poll_interval=0.3", "--quiet")
+      pid = Process.spawn(env, *command, chdir: @cut, out: File::NULL, err: File::NULL)
+      deadline = Process.clock_gettime(Process::CLOCK_MONOTONIC) + 120
+      sleep 0.2 until cutoff_jobs("base/lib").any? { |job| job["job_state"] == "RUNNING" } ||
+                      Process.clock_gettime(Process::CLOCK_MONOTONIC) > deadline
+      Process.kill("KILL", pid)
+      Process.wait(pid)
+      held = cutoff_jobs("base/user")
+      expect(held.map { |job| [job["job_state"], job["state_reason"]] }).to eq([%w[PENDING JobHeldUser]])
+
+      run = slurm_build
+      body = cutoff_record("base/lib")
+      expect(body["interface"]).to include("against" => @first["base/lib"]["version"], "verdict" => "unchanged")
+      expect(body["files"].map { |file| file["name"] }).to include(a_string_ending_with(".abi.xml.gz"))
+      kept = cutoff_record("base/user")
+      expect(kept).to include("status" => "kept", "files" => @first["base/user"]["files"])
+      expect(kept["cutoff"]).to eq("keeps" => @first["base/user"]["version"], "verdict" => "keep",
+                                   "reason" => "the interface of #{lib} did not change",
+                                   "evidence" => ["#{lib}: #{body['interface']['compared']} files compared with " \
+                                                  "#{@first['base/lib']['version']}, unchanged"])
+      expect(cutoff_record("base/app")).to include("status" => "kept")
+      expect(run.stdout).to include("bookworm/amd64: 1 built, 2 kept, 0 already built, 0 failed, 0 skipped")
+      # one job of base/lib, adopted; base/user's held one cancelled, never run; base/app's too
+      expect(cutoff_jobs("base/lib").map { |job| job["job_state"] }).to eq(["COMPLETED"])
+      expect(cutoff_jobs("base/user").map { |job| [job["job_id"], job["job_state"]] })
+        .to eq([[held.first["job_id"], "CANCELLED"]])
+      expect(cutoff_jobs("base/app").map { |job| job["job_state"] }).to eq(["CANCELLED"])
+      %w[base/user base/app].each do |package| # no result: the job never ran
+        expect(Dir.glob(File.join(@cutoff.target_dir, "slurm", "*", "#{@cutoff.source(package)}.result"))).to eq([])
+      end
+      expect(Dir.glob(File.join(@cutoff.target_dir, "slurm", "*", "replaced"))).to eq([])
+
+      cut!("publish")
+      expect(published).to include(lib => body["version"], user => @first["base/user"]["version"])
+      expect(relspec("why", "specs/sc.yml", "base/user", chdir: @cut).stdout).to include("base/user is kept at #{@first['base/user']['version']} as #{user}: " \
+                                                         "the interface of #{lib} did not change (#{lib}: ")
+    end
+
+    # base/app changes too: it names base/user's new version, so base/user
+    # is built (its job released) rather than kept.
+    it "builds a candidate that a package built in the run names at its new version" do
+      change("cut.c", "#include \"cut.h\"\nint cut_value(void) { return 46; }\n")
+      change("app.txt", "a change of base/app\n", package: "base/app")
+      cut!("compile")
+      run = slurm_build
+      user = cutoff_record("base/user")
+      expect(user["status"]).to eq("built")
+      expect(user["cutoff"]).to include("verdict" => "rebuild", "reason" => "built after all: #{@cutoff.source('base/app')} " \
+                                                                            "is built in this run and names its new version")
+      expect(cutoff_record("base/app")["status"]).to eq("built")
+      expect(run.stdout).to include("bookworm/amd64: 3 built, 0 already built, 0 failed, 0 skipped")
+      cut!("publish")
+      expect(published).to include(@cutoff.source("base/user") => user["version"],
+                                   @cutoff.source("base/app") => cutoff_record("base/app")["version"])
+    end
+
+    it "builds the candidates with --rebuild-dependents" do
+      change("cut.c", "#include \"cut.h\"\nint cut_value(void) { return 47; }\n")
+      cut!("compile")
+      slurm_build("--rebuild-dependents")
+      expect(cutoff_record("base/user")).to include("status" => "built")
+      expect(cutoff_record("base/user")["cutoff"])
+        .to include("verdict" => "rebuild", "reason" => "--rebuild-dependents: every candidate is built")
+      cut!("publish")
+    end
+
+    it "rebuilds the dependent of a header change, naming the library" do
+      before = cutoff_record("base/lib")
+      change("cut.h", "int cut_value(void);\nint cut_other(void);\n")
+      cut!("compile")
+      slurm_build
+      expect(cutoff_record("base/lib")["interface"]).to include("against" => before["version"], "verdict" => "changed",
+                                                                "changes" => ["opt/rock/sc/rock-sc-base-lib/include/cut.h: differs"])
+      expect(cutoff_record("base/user")).to include("status" => "built")
+      expect(cutoff_record("base/user")["cutoff"]).to include("verdict" => "rebuild",
+                                                              "reason" => "the interface of #{@cutoff.source('base/lib')} changed")
+    end
   end
 
   it "builds a real sbuild chain through Slurm, the chroot made by the target's chroot job" do

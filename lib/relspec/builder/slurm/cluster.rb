@@ -42,6 +42,12 @@ module Relspec
           run("scontrol", "release", ids.join(",")) unless ids.empty?
         end
 
+        # Makes the pending job +id+ wait for (afterok) the jobs +ids+
+        # alone (none: for nothing).
+        def depend(id, ids)
+          run("scontrol", "update", "JobId=#{id}", "Dependency=#{"afterok:#{ids.join(':')}" unless ids.empty?}")
+        end
+
         def cancel(ids)
           run("scancel", *ids.map(&:to_s)) unless ids.empty?
         end

@@ -3,6 +3,7 @@
 require "fileutils"
 require_relative "../../error"
 require_relative "../scheduler"
+require_relative "held_candidates"
 require_relative "job_result"
 require_relative "run"
 require_relative "submission"
@@ -24,6 +25,10 @@ module Relspec
       #
       # Outcomes are Scheduler::Outcome, handed to +on_done+ as the local
       # scheduler does, so build-results.yml is written the same way.
+      #
+      # The early cutoff (HeldCandidates): a candidate's job stays held
+      # until every package of its closure has its outcome; then the run's
+      # verdicts decide it, and its job is cancelled (kept) or released.
       class Engine
         # States after which a job does not run again.
         CANCELLED = "CANCELLED"
@@ -38,12 +43,16 @@ module Relspec
           @notices = notices
         end
 
-        # +plan+: BuildPlan; +done+: sources built before (not run again);
-        # +done_debs+: their .debs; +repositories+: as for the local builds;
-        # +rebuild+: the result files of an earlier relspec of this run are
-        # not taken either.
-        def run(plan:, target:, repositories:, done:, done_debs:, keep_going:, rebuild: false, on_start: nil,
-                on_done: nil)
+        # +plan+: BuildPlan; +done+: sources built or kept before (not run
+        # again); +done_debs+: their .debs; +repositories+: as for the local
+        # builds; +rebuild+: the result files of an earlier relspec of this
+        # run are not taken either. +verdicts+: the early cutoff's
+        # (Abi::InterfaceVerdicts, or Builder::NoVerdicts); +kept+: the
+        # sources of +done+ an earlier run kept; +take+: called with (entry,
+        # paths) for a job's verified files, returns the build's files (with
+        # the ABI dumps made here; the verdicts decided).
+        def run(plan:, target:, repositories:, done:, done_debs:, keep_going:, verdicts:, rebuild: false, on_start: nil,
+                on_done: nil, kept: [], take: ->(_entry, paths) { paths })
           @plan = plan
           @target = target
           @dir = plan.dir
@@ -55,14 +64,19 @@ module Relspec
           @failed = {} # source => the failed source (or chroot job) it goes back to
           @stopped = false
           @keep_going = keep_going
-          pending = plan.entries.reject { |entry| done.include?(entry.source) }
+          @take = take
+          @order = plan.entries.each_with_index.to_h { |entry, index| [entry.source, index] }
+          @settled = done.to_h { |source| [source, true] } # built or kept
           @tracked = {} # job id => entry
+          @held = [] # the ids of jobs held for the early cutoff's decision
           @submission = @prepare_id = nil # this run's, not an earlier target's
           live = @run.live_jobs(@cluster.queue)
+          pending = start_cutoff(plan, done, live, verdicts, kept, rebuild)
           pending = settle_finished(pending, live) unless rebuild
           return @outcomes if pending.empty?
 
           submit_all(pending, live, repositories, done_debs)
+          decide_ready
           poll
           @outcomes
         rescue Interrupt
@@ -71,6 +85,22 @@ module Relspec
         end
 
         private
+
+        # The entries to build or decide: those not done, and the keeps of
+        # earlier runs a package built now names at their new version
+        # (HeldCandidates#revoked_at_start).
+        def start_cutoff(plan, done, live, verdicts, kept, rebuild)
+          pending = plan.entries.reject { |entry| done.include?(entry.source) }
+          released = pending.select do |entry|
+            job = live[entry.source]
+            job ? !job.held? : !rebuild && JobResult.read(@run.result_path(entry.source), @dir)&.built?
+          end
+          @cutoff = HeldCandidates.new(verdicts, plan.entries, pending: pending, kept: kept,
+                                                               released: released.map(&:source))
+          revoked = @cutoff.revoked_at_start
+          revoked.each { |entry| @settled.delete(entry.source) }
+          plan.entries.select { |entry| pending.include?(entry) || revoked.include?(entry) }
+        end
 
         # Packages whose job (of an earlier relspec of this run) finished
         # and wrote a verified result: recorded built without a new job.
@@ -81,17 +111,67 @@ module Relspec
             result = JobResult.read(@run.result_path(entry.source), @dir)
             next false unless result&.built? && result.problem(entry.source, entry.version).nil?
 
-            report(Scheduler::Outcome.new(entry: entry, status: :built, value: result.paths, duration: result.duration))
+            report(taken(entry, result))
             true
+          rescue Relspec::Error
+            false # its evidence cannot be made: built again
           end
+        end
+
+        # The outcome of +entry+'s verified job result: built, with its
+        # evidence (+take+). A candidate an earlier relspec of the run let
+        # build is decided first (HeldCandidates: built).
+        def taken(entry, result)
+          @cutoff.decide(entry) if @cutoff.undecided?(entry.source)
+          Scheduler::Outcome.new(entry: entry, status: :built, value: @take.call(entry, result.paths),
+                                 duration: result.duration)
+        end
+
+        # Decides every held candidate whose closure has its outcomes: a
+        # kept one's job is cancelled (it never ran), a rebuilt one's
+        # released, after the kept packages it names are submitted again.
+        def decide_ready
+          while (entry = @cutoff.ready(@settled.keys).find { |one| @tracked.value?(one) })
+            id = @tracked.key(entry)
+            decision = @cutoff.decide(entry)
+            next keep(id, entry) if decision.keep
+
+            again = decision.revoke.map do |kept|
+              @settled.delete(kept.source)
+              @submission.resubmit(kept, live_ids)
+            end
+            @cluster.depend(id, @submission.closure_ids(entry).select { |one| live_ids.include?(one) }
+                                  .unshift(*[@prepare_id] & live_ids))
+            @held.delete(id)
+            @cluster.release([*again, id])
+          end
+        end
+
+        def keep(id, entry)
+          @tracked.delete(id)
+          @held.delete(id)
+          cancel([id])
+          report(Scheduler::Outcome.new(entry: entry, status: :kept, value: []))
+        end
+
+        # This relspec's jobs not ended yet (the chroot job's while it runs).
+        def live_ids
+          [*(@prepare_live ? [@prepare_id] : []), *@tracked.keys]
+        end
+
+        # @tracked in plan order: a package settles after its closure in
+        # one round (its record never names a build not recorded yet).
+        def in_plan_order
+          @tracked.sort_by { |id, entry| [@order[entry.source], id] }
         end
 
         def submit_all(pending, live, repositories, done_debs)
           @submission = Submission.new(cluster: @cluster, settings: @settings, backend: @backend, run: @run, plan: @plan,
                                        target: @target)
           @tracked = @submission.tracked
-          @submission.call(pending, live, repositories, done_debs)
+          @held = @submission.call(pending, live, repositories, done_debs, hold: @cutoff.method(:undecided?))
           @prepare_id = @submission.prepare_id
+          @prepare_live = true
         rescue BuildError
           cancel_all # nothing of a refused run stays held in the queue
           raise
@@ -105,7 +185,7 @@ module Relspec
             missing = @tracked.keys.reject { |id| queue[id] }
             @cluster.accounting(missing).each { |job| queue[job.id] = job }
             check_prepare(queue)
-            @tracked.sort.each do |id, entry|
+            in_plan_order.each do |id, entry|
               next unless @tracked.key?(id) # settled as a dependent of a failure in this round
 
               job = queue[id]
@@ -115,6 +195,7 @@ module Relspec
               end
               settle(id, entry, job)
             end
+            decide_ready
           end
         end
 
@@ -122,6 +203,7 @@ module Relspec
         # cancelled by Slurm (afterok), recorded skipped naming it.
         def check_prepare(queue)
           job = queue[@prepare_id]
+          @prepare_live &&= job&.live?
           return if @failed["chroot"] || job.nil? || job.live? || job.state == COMPLETED
 
           @failed["chroot"] = "the #{@target} chroot job failed (#{job.state}, see #{@run.prepare_log})"
@@ -133,10 +215,13 @@ module Relspec
           state = job&.state
           if (state.nil? || state == COMPLETED) && result&.built?
             problem = result.problem(entry.source, entry.version)
-            built = Scheduler::Outcome.new(entry: entry, status: :built, value: result.paths, duration: result.duration)
-            return report(built) unless problem
+            return fail(entry, "#{entry.source}: Slurm job #{id}: #{problem}", result&.duration) if problem
 
-            return fail(entry, "#{entry.source}: Slurm job #{id}: #{problem}", result&.duration)
+            begin
+              return report(taken(entry, result))
+            rescue Relspec::Error => e
+              return fail(entry, "#{entry.source}: #{e.message}", result.duration)
+            end
           end
           root = failed_root(entry)
           return skip(entry, skip_reason(root)) if root
@@ -175,7 +260,7 @@ module Relspec
         # Reverse dependencies of a failure (transitively, in plan order):
         # cancelled now rather than when Slurm notices.
         def skip_dependents
-          @tracked.sort.each do |id, entry|
+          in_plan_order.each do |id, entry|
             root = failed_root(entry)
             next unless root
 
@@ -205,8 +290,11 @@ module Relspec
             "failed (--keep-going builds the rest)"
         end
 
+        # A kept package built after all has its second outcome.
         def report(outcome)
+          @outcomes.reject! { |one| one.entry.source == outcome.entry.source }
           @outcomes << outcome
+          @settled[outcome.entry.source] = true if Scheduler::SUCCESSES.include?(outcome.status)
           @on_done&.call(outcome)
         end
 

@@ -37,20 +37,50 @@ module Relspec
         end
 
         # +pending+: the BuildPlan entries to build; +live+: the run's jobs
-        # in the queue (Run#live_jobs).
-        def call(pending, live, repositories, done_debs)
-          held = live.values.select(&:held?).map(&:id)
+        # in the queue (Run#live_jobs); +hold+: true for a source whose job
+        # waits, held, for the early cutoff's decision (HeldCandidates):
+        # it depends on the chroot job alone until then (#depend sets the
+        # rest), so that a job the cutoff cancels is no job's dependency.
+        # Returns the ids left held.
+        def call(pending, live, repositories, done_debs, hold: ->(_source) { false })
+          @repositories = repositories
+          @done_debs = done_debs
+          @in_run = pending.to_h { |entry| [entry.source, entry] }
+          @ids = {}
+          held = live.reject { |source, _| hold.call(source) }.values.select(&:held?).map(&:id)
           @prepare_id = live["chroot"]&.id || submit_prepare
           held << @prepare_id unless live["chroot"]
-          ids = {}
-          in_run = pending.to_h { |entry| [entry.source, entry] }
+          kept_held = []
           pending.each do |entry|
             adopted = live[entry.source]
-            ids[entry.source] = adopted&.id || submit_build(entry, in_run, ids, repositories, done_debs)
-            held << ids[entry.source] unless adopted
-            @tracked[ids[entry.source]] = entry
+            waits = hold.call(entry.source)
+            @ids[entry.source] = adopted&.id || submit_build(entry, waits ? [@prepare_id] : nil)
+            if adopted
+              kept_held << adopted.id if waits && adopted.held?
+            else
+              (waits ? kept_held : held) << @ids[entry.source]
+            end
+            @tracked[@ids[entry.source]] = entry
           end
           @cluster.release(held)
+          kept_held
+        end
+
+        # Submits +entry+'s build again, held (a package the early cutoff
+        # kept is built after all), after the jobs of its closure that are
+        # among +live+ (ids of this relspec's jobs not yet ended, the chroot
+        # job's among them while it runs): job ids that may have left
+        # Slurm's memory are never a dependency.
+        def resubmit(entry, live)
+          id = submit_build(entry, [@prepare_id, *closure_ids(entry)].select { |one| live.include?(one) })
+          @tracked[@ids[entry.source] = id] = entry
+          id
+        end
+
+        # The ids of the jobs of +entry+'s closure in this run (after a
+        # resubmission, the new ones).
+        def closure_ids(entry)
+          ancestors(entry).filter_map { |source| @ids[source] }
         end
 
         private
@@ -63,13 +93,15 @@ module Relspec
           submit(path, "chroot", @run.prepare_log, [])
         end
 
-        def submit_build(entry, in_run, ids, repositories, done_debs)
-          ancestors = ancestors(entry, in_run)
+        # +deps+: the jobs it waits for (default: the chroot job and those
+        # of its closure).
+        def submit_build(entry, deps = nil)
+          ancestors = ancestors(entry)
           dir = @run.dir
           staged = StagedResults.new(dir, entry.source)
           request = Request.new(source: entry.source, version: entry.version, dsc: File.expand_path(@plan.dsc_path(entry)),
-                                target: @target, repositories: repositories,
-                                local_debs: done_debs + ancestors.map { |source| File.join(dir, OutputTree.results_name(source)) },
+                                target: @target, repositories: @repositories,
+                                local_debs: @done_debs + ancestors.map { |source| File.join(dir, OutputTree.results_name(source)) },
                                 output_dir: staged.final, log: @run.log_path(entry.source))
           work = @run.work_dir(entry.source)
           path = File.join(@run.jobs_dir, "#{entry.source}.sh")
@@ -82,18 +114,17 @@ module Relspec
           AtomicFile.write(path, script)
           # afterok on every build of the run the job's backend installs
           # (the closure), not only the direct build-dependencies
-          deps = [@prepare_id, *ancestors.filter_map { |source| ids[source] }]
-          submit(path, entry.source, request.log, deps)
+          submit(path, entry.source, request.log, deps || [@prepare_id, *ancestors.filter_map { |source| @ids[source] }])
         end
 
         # The build-dependencies of +entry+ built in this run, also
         # indirect ones (sbuild installs them all from the folders given).
-        def ancestors(entry, in_run, seen = {})
+        def ancestors(entry, seen = {})
           entry.build_depends.each do |dep|
-            next if seen[dep] || !in_run[dep]
+            next if seen[dep] || !@in_run[dep]
 
             seen[dep] = true
-            ancestors(in_run[dep], in_run, seen)
+            ancestors(@in_run[dep], seen)
           end
           seen.keys.sort
         end
