@@ -327,7 +327,7 @@ RSpec.describe "relspec build --engine slurm", order: :defined do
       cut!("publish")
       expect(published).to include(lib => body["version"], user => @first["base/user"]["version"])
       expect(relspec("why", "specs/sc.yml", "base/user", chdir: @cut).stdout).to include("base/user is kept at #{@first['base/user']['version']} as #{user}: " \
-                                                         "the interface of #{lib} did not change (#{lib}: ")
+                                                                                         "the interface of #{lib} did not change (#{lib}: ")
     end
 
     # base/app changes too: it names base/user's new version, so base/user

@@ -50,6 +50,17 @@ RSpec.describe Relspec::Abi::InterfaceVerdicts, :tmpdir do
     expect(verdicts.comparable?(without_files, entry)).to be(false) # the target folder no longer had the kept build
   end
 
+  # A Slurm job replaces the old files before relspec takes its build:
+  # they are compared where Builder::Slurm::ReplacedFiles kept them.
+  it "finds the replaced build's files under +replaced+ when given" do
+    previous = record("1-1")
+    kept = File.join(@dir, "replaced")
+    FileUtils.mkdir_p(File.join(kept, "results/a"))
+    FileUtils.mv(File.join(@dir, "results/a/a_1-1_amd64.deb"), File.join(kept, "results/a/a_1-1_amd64.deb"))
+    expect(described_class.new({}, @dir).comparable?(previous, entry)).to be(false)
+    expect(described_class.new({}, @dir, replaced: kept).comparable?(previous, entry)).to be(true)
+  end
+
   it "decides nothing, and keeps nothing, when there is nothing to compare" do
     verdicts = described_class.of(Struct.new(:records) { def [](source) = records[source] }.new({}), [entry], @dir)
     expect(verdicts.decide(entry, [])).to be_nil
@@ -97,9 +108,14 @@ RSpec.describe Relspec::Abi::InterfaceVerdicts, :tmpdir do
     earlier = run_with("unchanged", decide: false)
     earlier.revoke("top", "built after all: app is built")
     expect(earlier.cutoff("top").to_h).to eq("keeps" => "1-1", "verdict" => "rebuild", "reason" => "built after all: app is built")
+    expect(verdicts.deciding?).to be(true)
     refused = run_with("unchanged", decide: false, refused: "--rebuild-dependents: every candidate is built")
+    expect(refused.deciding?).to be(false)
     expect(refused.keep(refused.instance_variable_get(:@entries)["mid"]).to_h)
       .to eq("keeps" => "1-1", "verdict" => "rebuild", "reason" => "--rebuild-dependents: every candidate is built")
+    # a Slurm run refusing the cutoff holds no job for a decision: the build taken records the refusal
+    slurm = run_with("unchanged", refused: "--rebuild-dependents: every candidate is built")
+    expect(slurm.cutoff("mid").to_h).to include("verdict" => "rebuild", "reason" => "--rebuild-dependents: every candidate is built")
   end
 
   # A run resumed after mid was kept: mid's keep of the earlier run, at

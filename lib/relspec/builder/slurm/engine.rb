@@ -3,6 +3,7 @@
 require "fileutils"
 require_relative "../../error"
 require_relative "../scheduler"
+require_relative "failures"
 require_relative "held_candidates"
 require_relative "job_result"
 require_relative "run"
@@ -61,14 +62,13 @@ module Relspec
           @on_start = on_start
           @on_done = on_done
           @outcomes = []
-          @failed = {} # source => the failed source (or chroot job) it goes back to
+          @failures = Failures.new(@run, target)
           @stopped = false
           @keep_going = keep_going
           @take = take
           @order = plan.entries.each_with_index.to_h { |entry, index| [entry.source, index] }
           @settled = done.to_h { |source| [source, true] } # built or kept
           @tracked = {} # job id => entry
-          @held = [] # the ids of jobs held for the early cutoff's decision
           @submission = @prepare_id = nil # this run's, not an earlier target's
           live = @run.live_jobs(@cluster.queue)
           pending = start_cutoff(plan, done, live, verdicts, kept, rebuild)
@@ -140,16 +140,17 @@ module Relspec
               @settled.delete(kept.source)
               @submission.resubmit(kept, live_ids)
             end
-            @cluster.depend(id, @submission.closure_ids(entry).select { |one| live_ids.include?(one) }
-                                  .unshift(*[@prepare_id] & live_ids))
-            @held.delete(id)
+            next @cluster.release(again) unless @held.delete(id) # released by an earlier relspec of the run
+
+            # afterok on the jobs of its closure not ended yet, the kept
+            # ones built after all among them
+            @cluster.depend(id, [@prepare_id, *@submission.closure_ids(entry)] & live_ids)
             @cluster.release([*again, id])
           end
         end
 
         def keep(id, entry)
-          @tracked.delete(id)
-          @held.delete(id)
+          @tracked.delete(id) && @held.delete(id)
           cancel([id])
           report(Scheduler::Outcome.new(entry: entry, status: :kept, value: []))
         end
@@ -169,6 +170,7 @@ module Relspec
           @submission = Submission.new(cluster: @cluster, settings: @settings, backend: @backend, run: @run, plan: @plan,
                                        target: @target)
           @tracked = @submission.tracked
+          # the ids of the jobs held for the early cutoff's decision
           @held = @submission.call(pending, live, repositories, done_debs, hold: @cutoff.method(:undecided?))
           @prepare_id = @submission.prepare_id
           @prepare_live = true
@@ -204,9 +206,9 @@ module Relspec
         def check_prepare(queue)
           job = queue[@prepare_id]
           @prepare_live &&= job&.live?
-          return if @failed["chroot"] || job.nil? || job.live? || job.state == COMPLETED
+          return if @failures.chroot_failed? || job.nil? || job.live? || job.state == COMPLETED
 
-          @failed["chroot"] = "the #{@target} chroot job failed (#{job.state}, see #{@run.prepare_log})"
+          @failures.chroot(job)
         end
 
         def settle(id, entry, job)
@@ -223,37 +225,22 @@ module Relspec
               return fail(entry, "#{entry.source}: #{e.message}", result.duration)
             end
           end
-          root = failed_root(entry)
-          return skip(entry, skip_reason(root)) if root
-          return skip(entry, not_started) if state == CANCELLED && @stopped
+          root = @failures.root(entry)
+          return skip(entry, @failures.skip_reason(root)) if root
+          return skip(entry, @failures.not_started) if state == CANCELLED && @stopped
 
-          fail(entry, failure_reason(id, entry, job, result), result&.duration)
-        end
-
-        def failure_reason(id, entry, job, result)
-          log = @run.log_path(entry.source)
-          return "#{entry.source}: Slurm job #{id} left the queue without a result, see #{log}" unless job
-
-          exit = result ? result.exit_status : job.exit_code
-          "#{entry.source}: Slurm job #{id} #{job.state}#{" (exit status #{exit})" if exit}, see #{log}"
-        end
-
-        def failed_root(entry)
-          return @failed["chroot"] if @failed["chroot"]
-
-          dep = entry.build_depends.find { |source| @failed[source] }
-          dep && @failed[dep]
+          fail(entry, @failures.reason(id, entry, job, result), result&.duration)
         end
 
         def fail(entry, reason, duration)
-          @failed[entry.source] = entry.source
+          @failures.failed(entry)
           report(Scheduler::Outcome.new(entry: entry, status: :failed, reason: reason, duration: duration))
           skip_dependents
           stop unless @keep_going
         end
 
         def skip(entry, reason)
-          @failed[entry.source] = failed_root(entry) || entry.source
+          @failures.skipped(entry)
           report(Scheduler::Outcome.new(entry: entry, status: :skipped, reason: reason))
         end
 
@@ -261,13 +248,13 @@ module Relspec
         # cancelled now rather than when Slurm notices.
         def skip_dependents
           in_plan_order.each do |id, entry|
-            root = failed_root(entry)
+            root = @failures.root(entry)
             next unless root
 
             @tracked.delete(id)
             cancel([id])
-            @failed[entry.source] = root
-            report(Scheduler::Outcome.new(entry: entry, status: :skipped, reason: skip_reason(root)))
+            @failures.skipped(entry, root)
+            report(Scheduler::Outcome.new(entry: entry, status: :skipped, reason: @failures.skip_reason(root)))
           end
         end
 
@@ -278,16 +265,7 @@ module Relspec
           queue = @cluster.queue.to_h { |job| [job.id, job] }
           waiting = @tracked.keys.select { |id| queue[id]&.state == "PENDING" }
           cancel(waiting)
-          waiting.each { |id| skip(@tracked.delete(id), not_started) }
-        end
-
-        def skip_reason(root)
-          root == @failed["chroot"] ? root : "build-dependency #{root} failed"
-        end
-
-        def not_started
-          "not started: the run stopped after #{@failed.select { |source, root| source == root }.keys.sort.join(', ')} " \
-            "failed (--keep-going builds the rest)"
+          waiting.each { |id| skip(@tracked.delete(id), @failures.not_started) }
         end
 
         # A kept package built after all has its second outcome.

@@ -78,4 +78,35 @@ RSpec.describe Relspec::Builder::Slurm::Submission, :tmpdir do
     expect(cluster.released).to eq([8, 101])
     expect(sub.tracked).to eq(8 => entries[0], 101 => entries[1])
   end
+
+  # The early cutoff's candidates (HeldCandidates): bb waits, held, after
+  # the chroot job alone, so that cancelling it leaves no job with a
+  # dependency that can never be met; cc, built, waits for bb's job.
+  it "leaves a candidate's job held after the chroot job alone, and submits a kept one again after the live jobs" do
+    entries = [entry("aa"), entry("bb", ["aa"]), entry("cc", ["bb"])]
+    sub = submission(entries)
+    held = sub.call(entries, {}, [], [], hold: ->(source) { source == "bb" })
+    expect(cluster.submitted.map { |script, options| [script, dependency(options)] })
+      .to eq([["chroot.sh", nil], ["aa.sh", "--dependency=afterok:101"], ["bb.sh", "--dependency=afterok:101"],
+              ["cc.sh", "--dependency=afterok:101:102:103"]])
+    expect(held).to eq([103])
+    expect(cluster.released).to eq([101, 102, 104])
+    expect(sub.closure_ids(entries[2])).to eq([102, 103])
+    # bb kept, then built after all: after aa's job while it runs (the chroot job ended)
+    expect(sub.resubmit(entries[1], [102, 104])).to eq(105)
+    expect(dependency(cluster.submitted.last.last)).to eq("--dependency=afterok:102")
+    expect(sub.closure_ids(entries[2])).to eq([102, 105])
+    expect(sub.tracked[105]).to eq(entries[1])
+  end
+
+  it "leaves an adopted candidate's job held, releasing the other held ones" do
+    entries = [entry("aa"), entry("bb", ["aa"])]
+    sub = submission(entries)
+    live = { "chroot" => Relspec::Builder::Slurm::Cluster::Job.new(id: 7, state: "RUNNING"),
+             "aa" => Relspec::Builder::Slurm::Cluster::Job.new(id: 8, state: "PENDING", reason: "JobHeldUser"),
+             "bb" => Relspec::Builder::Slurm::Cluster::Job.new(id: 9, state: "PENDING", reason: "JobHeldUser") }
+    expect(sub.call(entries, live, [], [], hold: ->(source) { source == "bb" })).to eq([9])
+    expect(cluster.submitted).to eq([])
+    expect(cluster.released).to eq([8])
+  end
 end
