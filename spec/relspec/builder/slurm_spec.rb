@@ -227,8 +227,8 @@ RSpec.describe "relspec build --engine slurm", order: :defined do
 
   # The early cutoff on Slurm (docs/scale-out.md, "Early cutoff"): the
   # release of early_cutoff_build_spec.rb (base/lib, a C library; base/user,
-  # which depends on it; base/app on base/user), built and published with
-  # the local engine, then changed and built on the cluster.
+  # which depends on it; base/app on base/user and base/lib2), built and
+  # published with the local engine, then changed and built on the cluster.
   describe "the early cutoff" do
     before(:all) do
       @cut = Dir.mktmpdir("relspec-slurm-cutoff")
@@ -238,7 +238,8 @@ RSpec.describe "relspec build --engine slurm", order: :defined do
       @cutoff.package("base/lib", cmake: @lib_cmake, files: { "cut.c" => "#include \"cut.h\"\nint cut_value(void) { return 42; }\n",
                                                               "cut.h" => "int cut_value(void);\n" })
       @cutoff.package("base/user", dependencies: ["base/lib"])
-      @cutoff.package("base/app", dependencies: ["base/user"])
+      @cutoff.package("base/lib2")
+      @cutoff.package("base/app", dependencies: %w[base/user base/lib2])
       @cutoff.compile(spec: "repository: { path: ../repos/sc, trusted: true }\n")
       [%w[build --backend host], %w[publish]].each do |command, *options|
         run = relspec(command, "specs/sc.yml", "--out", "out", *options, chdir: @cut)
@@ -346,6 +347,30 @@ RSpec.describe "relspec build --engine slurm", order: :defined do
       cut!("publish")
       expect(published).to include(@cutoff.source("base/user") => user["version"],
                                    @cutoff.source("base/app") => cutoff_record("base/app")["version"])
+    end
+
+    # base/user is kept (base/lib's body changed), then base/app is decided
+    # rebuild (base/lib2's installed file changed): base/app names
+    # base/user's new version, so base/user's job is submitted again and
+    # base/app's waits for it; the repository holds what base/app names.
+    it "builds a kept candidate after all, first, when a candidate decided rebuild names its new version" do
+      change("cut.c", "#include \"cut.h\"\nint cut_value(void) { return 48; }\n")
+      change("base-lib2.txt", "a change of base/lib2\n", package: "base/lib2")
+      cut!("compile")
+      run = slurm_build
+      user = cutoff_record("base/user")
+      app = cutoff_record("base/app")
+      expect(user["status"]).to eq("built")
+      expect(user["cutoff"]).to include("verdict" => "rebuild", "reason" => "built after all: #{@cutoff.source('base/app')} " \
+                                                                            "is built in this run and names its new version")
+      expect(app["cutoff"]).to include("verdict" => "rebuild", "reason" => "the interface of #{@cutoff.source('base/lib2')} changed")
+      expect(run.stdout).to include("bookworm/amd64: 4 built, 0 already built, 0 failed, 0 skipped")
+      app_job = cutoff_jobs("base/app").max_by { |job| job["job_id"] }
+      jobs = cutoff_jobs("base/user").select { |job| job["name"].end_with?(app_job["name"][/@\h+\z/]) } # this run's
+      expect(jobs.sort_by { |job| job["job_id"] }.map { |job| job["job_state"] }).to eq(%w[CANCELLED COMPLETED]) # kept, built after all
+      expect(app_job["start_time"]).to be >= jobs.last["end_time"]
+      cut!("publish")
+      expect(published).to include(@cutoff.source("base/user") => user["version"], @cutoff.source("base/app") => app["version"])
     end
 
     it "builds the candidates with --rebuild-dependents" do
