@@ -367,7 +367,8 @@ RSpec.describe "relspec build --engine slurm", order: :defined do
       expect(run.stdout).to include("bookworm/amd64: 4 built, 0 already built, 0 failed, 0 skipped")
       app_job = cutoff_jobs("base/app").max_by { |job| job["job_id"] }
       jobs = cutoff_jobs("base/user").select { |job| job["name"].end_with?(app_job["name"][/@\h+\z/]) } # this run's
-      expect(jobs.sort_by { |job| job["job_id"] }.map { |job| job["job_state"] }).to eq(%w[CANCELLED COMPLETED]) # kept, built after all
+                                     .sort_by { |job| job["job_id"] }
+      expect(jobs.map { |job| job["job_state"] }).to eq(%w[CANCELLED COMPLETED]) # kept, then built after all
       expect(app_job["start_time"]).to be >= jobs.last["end_time"]
       cut!("publish")
       expect(published).to include(@cutoff.source("base/user") => user["version"], @cutoff.source("base/app") => app["version"])
