@@ -68,6 +68,23 @@ class BuildRelease
     File.join(dir, "out", name, target)
   end
 
+  # A new version of +package+: +content+ at +path+ of its source, through
+  # an overlay file.
+  def change(package, path, content)
+    overlay = File.join(dir, "overlays", package, "files", path)
+    FileUtils.mkdir_p(File.dirname(overlay))
+    File.write(overlay, content)
+  end
+
+  # Debian name => version of the binary packages the reprepro repository
+  # repos/<name> holds for +codename+ (reprepro's own listing).
+  def published(codename = "bookworm")
+    output, status = Open3.capture2e("reprepro", "-b", File.join(dir, "repos", name), "list", codename)
+    raise output unless status.success?
+
+    output.lines.to_h { |line| line.split(": ", 2).last.split }
+  end
+
   # The Debian source name of a package.
   def source(package)
     "rock-#{name}-#{package.tr('/', '-')}"

@@ -2,6 +2,7 @@
 
 require "fileutils"
 require_relative "../apt/deb822"
+require_relative "hard_link"
 
 module Relspec
   module Builder
@@ -19,7 +20,7 @@ module Relspec
         @scratch = scratch
         @dir = File.join(scratch, "debs")
         Dir.mkdir(@dir, 0o755)
-        debs.uniq { |deb| File.basename(deb) }.each { |deb| link(deb, File.join(@dir, File.basename(deb))) }
+        debs.uniq { |deb| File.basename(deb) }.each { |deb| HardLink.place(deb, File.join(@dir, File.basename(deb))) }
         @files = nil
       end
 
@@ -49,14 +50,6 @@ module Relspec
           [fields.values_at("Package", "Version", "Architecture"), File.basename(fields.fetch("Filename"))]
         end
         @files[[package.name, package.version, package.arch]]
-      end
-
-      private
-
-      def link(deb, path)
-        File.link(deb, path)
-      rescue SystemCallError
-        FileUtils.cp(deb, path)
       end
     end
   end

@@ -26,6 +26,12 @@ module Relspec
         @lock = Mutex.new
       end
 
+      # Why a kept package is built after all: +source+, built in the
+      # run, names its new version (the Slurm engine says it too).
+      def self.built_after_all(source)
+        "built after all: #{source} is built in this run and names its new version"
+      end
+
       # True when the cutoff keeps +entry+: it is not built.
       def keep?(entry)
         return false unless @verdicts.keep(entry)&.keep?
@@ -56,7 +62,7 @@ module Relspec
 
       def revoke(kept, entry)
         started = Process.clock_gettime(Process::CLOCK_MONOTONIC)
-        @verdicts.revoke(kept.source, "built after all: #{entry.source} is built in this run and names its new version")
+        @verdicts.revoke(kept.source, EarlyCutoff.built_after_all(entry.source))
         outcome = begin
           Scheduler::Outcome.new(entry: kept, status: :built, value: yield(kept))
         rescue Relspec::Error => e

@@ -2,7 +2,6 @@
 
 require "spec_helper"
 require "json"
-require "open3"
 require "yaml"
 require_relative "../../support/build_release"
 
@@ -50,18 +49,12 @@ RSpec.describe "the early cutoff on a published release", order: :defined do
 
   # A new version of +package+ from an overlay file over the source.
   def change(path, content, package: "base/lib")
-    overlay = File.join(@dir, "overlays", package, "files", path)
-    FileUtils.mkdir_p(File.dirname(overlay))
-    File.write(overlay, content)
+    @release.change(package, path, content)
   end
 
-  # Debian name => version of the binary packages the repository holds
-  # (reprepro's own listing).
+  # Debian name => version of the binary packages the repository holds.
   def published
-    output, status = Open3.capture2e("reprepro", "-b", File.join(@dir, "repos", "ec"), "list", "bookworm")
-    raise output unless status.success?
-
-    output.lines.to_h { |line| line.split(": ", 2).last.split }
+    @release.published
   end
 
   def lock

@@ -2,7 +2,6 @@
 
 require "spec_helper"
 require "json"
-require "open3"
 require "yaml"
 require "pathname"
 require "digest"
@@ -255,9 +254,7 @@ RSpec.describe "relspec build --engine slurm", order: :defined do
     end
 
     def change(path, content, package: "base/lib")
-      overlay = File.join(@cut, "overlays", package, "files", path)
-      FileUtils.mkdir_p(File.dirname(overlay))
-      File.write(overlay, content)
+      @cutoff.change(package, path, content)
     end
 
     def cut!(*args)
@@ -271,13 +268,6 @@ RSpec.describe "relspec build --engine slurm", order: :defined do
       build(*args, dir: @cut, spec: "specs/sc.yml").tap do |run|
         expect(run.exit_code).to eq(0), run.stdout + run.stderr + @cluster.logs
       end
-    end
-
-    def published
-      output, status = Open3.capture2e("reprepro", "-b", File.join(@cut, "repos", "sc"), "list", "bookworm")
-      raise output unless status.success?
-
-      output.lines.to_h { |line| line.split(": ", 2).last.split }
     end
 
     def cutoff_jobs(package)
@@ -326,7 +316,7 @@ RSpec.describe "relspec build --engine slurm", order: :defined do
       expect(Dir.glob(File.join(@cutoff.target_dir, "slurm", "*", "replaced"))).to eq([])
 
       cut!("publish")
-      expect(published).to include(lib => body["version"], user => @first["base/user"]["version"])
+      expect(@cutoff.published).to include(lib => body["version"], user => @first["base/user"]["version"])
       expect(relspec("why", "specs/sc.yml", "base/user", chdir: @cut).stdout).to include("base/user is kept at #{@first['base/user']['version']} as #{user}: " \
                                                                                          "the interface of #{lib} did not change (#{lib}: ")
     end
@@ -345,8 +335,8 @@ RSpec.describe "relspec build --engine slurm", order: :defined do
       expect(cutoff_record("base/app")["status"]).to eq("built")
       expect(run.stdout).to include("bookworm/amd64: 3 built, 0 already built, 0 failed, 0 skipped")
       cut!("publish")
-      expect(published).to include(@cutoff.source("base/user") => user["version"],
-                                   @cutoff.source("base/app") => cutoff_record("base/app")["version"])
+      expect(@cutoff.published).to include(@cutoff.source("base/user") => user["version"],
+                                           @cutoff.source("base/app") => cutoff_record("base/app")["version"])
     end
 
     # base/user is kept (base/lib's body changed), then base/app is decided
@@ -371,7 +361,7 @@ RSpec.describe "relspec build --engine slurm", order: :defined do
       expect(jobs.map { |job| job["job_state"] }).to eq(%w[CANCELLED COMPLETED]) # kept, then built after all
       expect(app_job["start_time"]).to be >= jobs.last["end_time"]
       cut!("publish")
-      expect(published).to include(@cutoff.source("base/user") => user["version"], @cutoff.source("base/app") => app["version"])
+      expect(@cutoff.published).to include(@cutoff.source("base/user") => user["version"], @cutoff.source("base/app") => app["version"])
     end
 
     it "builds the candidates with --rebuild-dependents" do

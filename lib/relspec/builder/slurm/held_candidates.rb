@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require_relative "../build_plan"
+require_relative "../early_cutoff"
 
 module Relspec
   module Builder
@@ -92,7 +93,7 @@ module Relspec
         end
 
         def because(source)
-          "built after all: #{source} is built in this run and names its new version"
+          EarlyCutoff.built_after_all(source)
         end
 
         def closure(source)

@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require "fileutils"
+require_relative "../hard_link"
 
 module Relspec
   module Builder
@@ -30,23 +31,14 @@ module Relspec
             path = File.join(@root, file.name)
             FileUtils.mkdir_p(File.dirname(path))
             FileUtils.rm_f(path)
-            link(File.join(dir, file.name), path)
+            # no room while the job has not replaced the file
+            HardLink.place(File.join(dir, file.name), path)
           end
         end
 
         # The run ended: nothing is compared any more.
         def drop
           FileUtils.rm_rf(@root)
-        end
-
-        private
-
-        # A hard link costs no room while the job has not replaced the
-        # file; a copy where the filesystem refuses links.
-        def link(from, to)
-          File.link(from, to)
-        rescue SystemCallError
-          FileUtils.cp(from, to)
         end
       end
     end
