@@ -136,16 +136,8 @@ module Relspec
             decision = @cutoff.decide(entry)
             next keep(id, entry) if decision.keep
 
-            again = decision.revoke.map do |kept|
-              @settled.delete(kept.source)
-              @submission.resubmit(kept, live_ids)
-            end
-            next @cluster.release(again) unless @held.delete(id) # released by an earlier relspec of the run
-
-            # afterok on the jobs of its closure not ended yet, the kept
-            # ones built after all among them
-            @cluster.depend(id, [@prepare_id, *@submission.closure_ids(entry)] & live_ids)
-            @cluster.release([*again, id])
+            decision.revoke.each { |kept| @settled.delete(kept.source) }
+            @submission.release_decided(id, entry, decision.revoke, prepare_live: @prepare_live, held: @held.delete(id))
           end
         end
 
@@ -153,11 +145,6 @@ module Relspec
           @tracked.delete(id) && @held.delete(id)
           cancel([id])
           report(Scheduler::Outcome.new(entry: entry, status: :kept, value: []))
-        end
-
-        # This relspec's jobs not ended yet (the chroot job's while it runs).
-        def live_ids
-          [*(@prepare_live ? [@prepare_id] : []), *@tracked.keys]
         end
 
         # @tracked in plan order: a package settles after its closure in

@@ -66,12 +66,37 @@ module Relspec
           kept_held
         end
 
+        # Releases the job +id+ of +entry+, a candidate decided rebuild,
+        # with new jobs for the kept packages it names (+revoked+: entries,
+        # built after all, first). +held+: false for a job an earlier
+        # relspec of the run released (the kept ones alone are released);
+        # +prepare_live+: the chroot job has not ended.
+        def release_decided(id, entry, revoked, prepare_live:, held:)
+          live = -> { [*(prepare_live ? [@prepare_id] : []), *@tracked.keys] }
+          again = revoked.map { |kept| resubmit(kept, live.call) }
+          return @cluster.release(again) unless held
+
+          if again.empty?
+            # afterok on the jobs of its closure not ended yet
+            @cluster.depend(id, [@prepare_id, *closure_ids(entry)] & live.call)
+          else
+            # Slurm keeps the script a job was submitted with: the held one
+            # (no job's dependency) gives way to one naming the new builds
+            @tracked.delete(id)
+            @cluster.cancel([id])
+            id = resubmit(entry, live.call)
+          end
+          @cluster.release([*again, id])
+        end
+
         # Submits +entry+'s build again, held (a package the early cutoff
-        # kept is built after all), after the jobs of its closure that are
-        # among +live+ (ids of this relspec's jobs not yet ended, the chroot
-        # job's among them while it runs): job ids that may have left
-        # Slurm's memory are never a dependency.
+        # kept is built after all, or one that names it), now built in the
+        # run (its folder given to the builds that need it), after the jobs
+        # of its closure that are among +live+ (ids of this relspec's jobs
+        # not yet ended, the chroot job's among them while it runs): job
+        # ids that may have left Slurm's memory are never a dependency.
         def resubmit(entry, live)
+          @in_run[entry.source] = entry
           id = submit_build(entry, [@prepare_id, *closure_ids(entry)].select { |one| live.include?(one) })
           @tracked[@ids[entry.source] = id] = entry
           id

@@ -14,13 +14,16 @@ require "relspec/builder/slurm/submission"
 # no process; spec/relspec/builder/slurm_spec.rb runs the same code against
 # a real one-node cluster.
 RSpec.describe Relspec::Builder::Slurm::Submission, :tmpdir do
-  # Records submissions (held), gives increasing ids, records releases.
+  # Records submissions (held), gives increasing ids, records releases,
+  # dependencies set and cancellations.
   class RecordingCluster
-    attr_reader :submitted, :released
+    attr_reader :submitted, :released, :depended, :cancelled
 
     def initialize
       @submitted = []
       @released = []
+      @depended = []
+      @cancelled = []
     end
 
     def submit(script, options)
@@ -30,6 +33,14 @@ RSpec.describe Relspec::Builder::Slurm::Submission, :tmpdir do
 
     def release(ids)
       @released.concat(ids)
+    end
+
+    def depend(id, ids)
+      @depended << [id, ids]
+    end
+
+    def cancel(ids)
+      @cancelled.concat(ids)
     end
   end
 
@@ -108,5 +119,35 @@ RSpec.describe Relspec::Builder::Slurm::Submission, :tmpdir do
     expect(sub.call(entries, live, [], [], hold: ->(source) { source == "bb" })).to eq([9])
     expect(cluster.submitted).to eq([])
     expect(cluster.released).to eq([8])
+  end
+
+  it "releases a candidate decided rebuild after the jobs of its closure still running" do
+    entries = [entry("aa"), entry("bb", ["aa"])]
+    sub = submission(entries)
+    sub.call(entries, {}, [], [], hold: ->(source) { source == "bb" })
+    sub.tracked.delete(102) # aa's job ended
+    sub.release_decided(103, entries[1], [], prepare_live: true, held: true)
+    expect(cluster.depended).to eq([[103, [101]]])
+    expect(cluster.released.last).to eq(103)
+  end
+
+  # cc (a candidate decided rebuild) names bb, which an earlier run kept
+  # (not in this run's submission): bb's job is submitted, and cc's held
+  # job gives way to one whose script names bb's folder and waits for it
+  # (Slurm keeps the script a job was submitted with).
+  it "submits the kept packages a rebuilt candidate names first, and the candidate again naming them" do
+    entries = [entry("aa"), entry("bb", ["aa"]), entry("cc", ["bb"])]
+    sub = submission(entries)
+    sub.call([entries[0], entries[2]], {}, [], [], hold: ->(source) { source == "cc" }) # 101 chroot, 102 aa, 103 cc
+    first = File.read(File.join(@dir, "slurm", Dir.children(File.join(@dir, "slurm")).first, "cc.sh"))
+    expect(first).not_to include("results/bb")
+    sub.release_decided(103, entries[2], [entries[1]], prepare_live: false, held: true)
+    expect(cluster.submitted.drop(3).map { |script, options| [script, dependency(options)] })
+      .to eq([["bb.sh", "--dependency=afterok:102"], ["cc.sh", "--dependency=afterok:102:104"]])
+    expect(cluster.cancelled).to eq([103])
+    expect(cluster.released.last(2)).to eq([104, 105])
+    expect(sub.tracked.transform_values(&:source)).to eq(102 => "aa", 104 => "bb", 105 => "cc")
+    script = File.read(File.join(@dir, "slurm", Dir.children(File.join(@dir, "slurm")).first, "cc.sh"))
+    expect(script).to include("#{@dir}/results/bb")
   end
 end
