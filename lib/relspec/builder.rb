@@ -178,7 +178,7 @@ module Relspec
         @listener&.start(target, plan.entries.size, done.size)
         local = Mutex.new
         debs = built.flat_map { |entry| debs_of(dir, results[entry.source]) }
-        evidence = slurm? ? job_evidence(plan, target, backend, results, done) : nil
+        evidence = slurm? ? job_evidence(plan, target, backend, results, built.map(&:source)) : nil
         verdicts = @verdicts.call(results, plan.entries, dir, refused: refused, replaced: evidence&.replaced&.root)
         cutoff = EarlyCutoff.new(verdicts, plan.entries, kept: kept.map(&:source))
         on_start = ->(entry) { @listener&.building(entry) }
@@ -218,11 +218,12 @@ module Relspec
       end
 
       # The early cutoff's evidence of the run's jobs (Slurm::JobEvidence),
-      # the builds they replace kept first.
-      def job_evidence(plan, target, backend, results, done)
+      # the builds they may replace kept first: all but those +built+ by
+      # an earlier run (a keep of an earlier run may be built after all).
+      def job_evidence(plan, target, backend, results, built)
         dumps = ->(source, files, folder, log) { abi_dumps(source, files, folder, log) }
         Slurm::JobEvidence.new(Slurm::Run.new(plan, target, backend.name), dumps).tap do |evidence|
-          evidence.keep(plan.entries.reject { |entry| done.include?(entry.source) }.map { |entry| results[entry.source] })
+          evidence.keep(plan.entries.reject { |entry| built.include?(entry.source) }.map { |entry| results[entry.source] })
         end
       end
 
