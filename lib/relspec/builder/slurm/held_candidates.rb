@@ -65,7 +65,7 @@ module Relspec
           cutoff = @verdicts.keep(entry)
           by = @forced[entry.source]
           if cutoff&.keep? && by
-            @verdicts.revoke(entry.source, by == entry.source ? "built: an earlier relspec of this run released its job" : because(by))
+            @verdicts.revoke(entry.source, forced_by(by, entry.source))
           elsif cutoff&.keep?
             return Decision.new(keep: @kept[entry.source] = true, revoke: [])
           end
@@ -88,12 +88,14 @@ module Relspec
         def revoke_for(source)
           closure(source).select { |need| @kept[need] }.each do |need|
             @kept.delete(need)
-            @verdicts.revoke(need, because(source))
+            @verdicts.revoke(need, EarlyCutoff.built_after_all(source))
           end
         end
 
-        def because(source)
-          EarlyCutoff.built_after_all(source)
+        # Why the candidate +source+, forced by +by+, is built although its
+        # closure kept its interface.
+        def forced_by(by, source)
+          by == source ? "built: an earlier relspec of this run released its job" : EarlyCutoff.built_after_all(by)
         end
 
         def closure(source)
