@@ -92,10 +92,10 @@ module Relspec
           end
         end
 
-        # Why the candidate +source+, forced by +by+, is built although its
-        # closure kept its interface.
-        def forced_by(by, source)
-          by == source ? "built: an earlier relspec of this run released its job" : EarlyCutoff.built_after_all(by)
+        # Why the candidate +source+, forced by +builder+ (a package built
+        # in the run), is built although its closure kept its interface.
+        def forced_by(builder, source)
+          builder == source ? "built: an earlier relspec of this run released its job" : EarlyCutoff.built_after_all(builder)
         end
 
         def closure(source)
