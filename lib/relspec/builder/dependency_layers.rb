@@ -36,9 +36,12 @@ module Relspec
       # +namespace+: unshare's options for the chroot's root
       # (ChrootLayers#namespace); +archives+: the folder of .debs kept for
       # the target (AptCache#target_dir), nil for none; +arch+: the
-      # target's architecture; +owner+: [uid, gid] of the chroot's root.
-      def initialize(folder, namespace:, archives:, arch:, owner:)
+      # target's architecture; +owner+: [uid, gid] of the chroot's root;
+      # +depends+: what sbuild adds to every build's Build-Depends besides
+      # its core ones (its $manual_depends: ccache when builds use it).
+      def initialize(folder, namespace:, archives:, arch:, owner:, depends: [])
         @folder = folder
+        @depends = depends
         @namespace = namespace
         @owner = owner
         @archives = archives
@@ -125,7 +128,7 @@ module Relspec
           File.symlink(list, File.join(lists, File.basename(list))) if File.file?(list) && File.basename(list) != "lock"
         end
         output = File.join(scratch, "simulation")
-        tool.run(request.source, BuildDependencySet.simulate_command(lower, scratch, build_depends(fields), options),
+        tool.run(request.source, BuildDependencySet.simulate_command(lower, scratch, build_depends(fields) + @depends, options),
                  log: output, name: "resolving the build-dependencies")
         BuildDependencySet.from_simulation(File.read(output), source: request.source)
       rescue BuildError, SystemCallError => e

@@ -171,7 +171,8 @@ module Relspec
           @dependencies[target.to_s] ||=
             DependencyLayers.new(layers.folder, namespace: layers.namespace, arch: target.arch,
                                                 owner: [layers.uids.first, layers.gids.first],
-                                                archives: @apt_cache&.target_folder(target))
+                                                archives: @apt_cache&.target_folder(target),
+                                                depends: @ccache ? [Ccache::PACKAGE] : [])
         end
       end
 

@@ -37,8 +37,9 @@ RSpec.describe Relspec::Builder::DependencyLayers do
     end
   end
 
-  def layers
-    described_class.new(@dir, namespace: %w[unshare --user], archives: nil, arch: "amd64", owner: [Process.uid, Process.gid])
+  def layers(depends: [])
+    described_class.new(@dir, namespace: %w[unshare --user], archives: nil, arch: "amd64", owner: [Process.uid, Process.gid],
+                              depends: depends)
   end
 
   def request(source, repositories: [], more: "")
@@ -89,6 +90,10 @@ RSpec.describe Relspec::Builder::DependencyLayers do
     end
     expect(layers.for(apt, request("a"), "/run/lower").folder).to be_nil
     expect(seen.first.last(2)).to eq(["debhelper-compat (= 13), cmake", "build-essential, fakeroot"])
+    # and what sbuild adds to every build (its $manual_depends): the null
+    # resolver must find it installed too
+    layers(depends: ["ccache"]).for(apt, request("a"), "/run/lower")
+    expect(seen.last.last(3)).to eq(["debhelper-compat (= 13), cmake", "ccache", "build-essential, fakeroot"])
   end
 
   it "gives no layer but the null resolver when the set is empty (all in the lower layer)" do

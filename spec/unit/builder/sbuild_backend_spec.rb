@@ -164,7 +164,8 @@ RSpec.describe Relspec::Builder::SbuildBackend do
       File.write(deb, "")
       cmake = "Inst cmake (3.25.1-1 Debian:12.11/stable [amd64])\n"
       tool = resolver.new({ "empty" => "", "cmake" => cmake, "conflicts" => cmake })
-      backend = described_class.new(tool, {}, chroot_cache: cache, unpack_dir: unpack, ccache: nil, apt_cache: apt_cache,
+      ccache = Relspec::Builder::Ccache.new(File.join(dir, "ccache"), owner: [Process.uid, Process.gid])
+      backend = described_class.new(tool, {}, chroot_cache: cache, unpack_dir: unpack, ccache: ccache, apt_cache: apt_cache,
                                               layer_ids: [[Process.uid, 1], [Process.gid, 1]])
       allow(Relspec::Builder::Chroot).to receive(:host_arch).and_return("amd64")
       sbuilds = %w[empty cmake conflicts].map do |source|
@@ -177,6 +178,9 @@ RSpec.describe Relspec::Builder::SbuildBackend do
         tool.runs.select { |run| run[:name] == "sbuild" }.last[:command]
       end
       empty, on_layer, conflicts = sbuilds
+      # the set holds what sbuild adds for ccache ($manual_depends)
+      simulation = tool.runs.find { |run| run[:name] == "resolving the build-dependencies" }[:command]
+      expect(simulation.last(3)).to eq(["cmake", "ccache", "build-essential, fakeroot"])
       # the set all in the lower layer, or in the layer under the build
       [empty, on_layer].each do |command|
         expect(command).to include("--build-dep-resolver=null")
@@ -187,11 +191,12 @@ RSpec.describe Relspec::Builder::SbuildBackend do
       # nothing to download: no apt cache bound in, no .debs linked or kept
       expect(unpack.extras[0].join).not_to include("relspec-apt", "#{dir}/apt")
       expect(unpack.extras[1].join).not_to include("relspec-apt", "#{dir}/apt")
+      expect(unpack.extras[1]).to include(*ccache.config_lines)
       # Build-Conflicts: apt removes what conflicts, on the same layer
       expect(conflicts).not_to include("--build-dep-resolver=null")
       expect(conflicts).to include("--extra-package=#{deb}")
       expect(conflicts[9]).to eq(on_layer[9])
-      expect(unpack.extras[2]).to eq([*unpack.extras[2].first(5), *apt_cache.config_lines(Relspec::Target.new("bookworm", "amd64"))])
+      expect(unpack.extras[2]).to end_with(*ccache.config_lines, *apt_cache.config_lines(Relspec::Target.new("bookworm", "amd64")))
     end
   end
 
