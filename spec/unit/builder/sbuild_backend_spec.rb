@@ -16,11 +16,43 @@ RSpec.describe Relspec::Builder::SbuildBackend do
     end
   end
 
-  it "runs sbuild with the environment of where the chroot is unpacked, of the compiler cache and of the target's apt download cache" do
-    Dir.mktmpdir do |dir|
-      cache = File.join(dir, "chroots")
+  # A folder of chroot tarballs holding bookworm/amd64's (empty: the tool never reads it).
+  def tarball_cache(dir)
+    File.join(dir, "chroots").tap do |cache|
       FileUtils.mkdir_p(cache)
       File.write(File.join(cache, "bookworm-amd64.tar.zst"), "")
+    end
+  end
+
+  # UnpackDir's part for layers: the run's folders below +root+; records the
+  # configuration lines of every build (+extras+, the last one +extra+).
+  let(:layer_folders) do
+    Class.new do
+      attr_reader :extras
+
+      def initialize(root)
+        @root = root
+        @extras = []
+      end
+
+      def folder(name)
+        File.join(@root, name).tap { |path| FileUtils.mkdir_p(path) }
+      end
+
+      def environment(extra)
+        @extras << extra
+        {}
+      end
+
+      def extra
+        @extras.last
+      end
+    end
+  end
+
+  it "runs sbuild with the environment of where the chroot is unpacked, of the compiler cache and of the target's apt download cache" do
+    Dir.mktmpdir do |dir|
+      cache = tarball_cache(dir)
       tool = recorder.new([])
       unpack = Class.new do
         attr_reader :extra
@@ -54,28 +86,11 @@ RSpec.describe Relspec::Builder::SbuildBackend do
 
   it "builds on a layer of its own over the target's chroot, unpacked once, and removes the layer after the build" do
     Dir.mktmpdir do |dir|
-      cache = File.join(dir, "chroots")
-      FileUtils.mkdir_p(cache)
+      cache = tarball_cache(dir)
       tarball = File.join(cache, "bookworm-amd64.tar.zst")
-      File.write(tarball, "")
       tool = recorder.new([])
       folders = File.join(dir, "run")
-      unpack = Class.new do
-        attr_reader :extra
-
-        def initialize(root)
-          @root = root
-        end
-
-        def folder(name)
-          File.join(@root, name).tap { |path| FileUtils.mkdir_p(path) }
-        end
-
-        def environment(extra)
-          @extra = extra
-          {}
-        end
-      end.new(folders)
+      unpack = layer_folders.new(folders)
       ids = [[Process.uid, 1], [Process.gid, 1]]
       backend = described_class.new(tool, {}, chroot_cache: cache, unpack_dir: unpack, ccache: nil, apt_cache: nil,
                                               layer_ids: ids, dependency_layers: false)
@@ -137,26 +152,8 @@ RSpec.describe Relspec::Builder::SbuildBackend do
 
   it "runs sbuild's null resolver, with no .debs to resolve from nor any to download, when the chroot holds the exact set" do
     Dir.mktmpdir do |dir|
-      cache = File.join(dir, "chroots")
-      FileUtils.mkdir_p(cache)
-      File.write(File.join(cache, "bookworm-amd64.tar.zst"), "")
-      unpack = Class.new do
-        attr_reader :extras
-
-        def initialize(root)
-          @root = root
-          @extras = []
-        end
-
-        def folder(name)
-          File.join(@root, name).tap { |path| FileUtils.mkdir_p(path) }
-        end
-
-        def environment(extra)
-          @extras << extra
-          {}
-        end
-      end.new(File.join(dir, "run"))
+      cache = tarball_cache(dir)
+      unpack = layer_folders.new(File.join(dir, "run"))
       folder = Relspec::Builder::BuildUserFolder.new(File.join(dir, "apt"), owner: [Process.uid, Process.gid],
                                                                             what: "apt download cache", variable: "V")
       apt_cache = Relspec::Builder::AptCache.new(folder)
