@@ -19,12 +19,13 @@
 #
 #   bundle exec ruby bench/sbuild_release.rb
 #
-# BENCH_CORE_SLICE=1: a 10-package slice of the Rock core instead (issue
+# BENCH_CORE_SLICE=1: a slice of the Rock core instead (11 packages; issue
 # 48): the real buildconf's offline workspace (RockCoreRelease, from
 # ../shared's bundles), bookworm/amd64 only, selecting SLICE with what they
 # depend on (tools/class_loader with base/console_bridge, base/logging and
-# base/cmake: CMake; tools/metaruby with utilrb and facets, rgl with stream
-# and pairing_heap: Ruby), built old way then new way; not published.
+# base/cmake: CMake; tools/metaruby with utilrb and facets,
+# base/templates/ruby_lib with hoe-yard, rake-compiler and rice: Ruby), built old
+# way then new way; not published.
 require "fileutils"
 require "open3"
 require "rbconfig"
@@ -35,7 +36,7 @@ require_relative "timing"
 ROOT = File.expand_path("..", __dir__)
 EXE = File.join(ROOT, "exe", "relspec")
 RELEASES = %w[demo-base demo-child].freeze
-SLICE = %w[tools/class_loader tools/metaruby rgl].freeze
+SLICE = %w[tools/class_loader tools/metaruby base/templates/ruby_lib].freeze
 
 def run!(env, *command, chdir:)
   output, status = Open3.capture2e(env, *command, chdir: chdir)
