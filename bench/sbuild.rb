@@ -12,8 +12,8 @@
 #    target), alternating BENCH_ROUNDS times (default 2), and the new way
 #    without the build-dependency layers (RELSPEC_DEPENDENCY_LAYERS=off;
 #    the two packages declare the same Build-Depends, so with them the
-#    second builds on the first's layer): each package's recorded duration
-#    and the sbuild/host ratio.
+#    second builds on the first's layer, and both with sbuild's null
+#    resolver): each package's recorded duration and the sbuild/host ratio.
 # 2. sbuild alone, each line of its output timestamped, its phases (its
 #    section banners) in a table with the total's ratio to the host
 #    backend: the old command line as the backend ran it, then the same
@@ -21,7 +21,9 @@
 #    configuration: no apt-get update, nothing purged), without and with
 #    the kept .debs, and on a layer over the build-dependency layer of its
 #    exact set (DependencyLayers; resolving the set, and making the layer
-#    the first time, timed apart), alternating as well.
+#    the first time, timed apart), alternating as well; where the chroot
+#    then holds exactly the build's set, the same with sbuild's null
+#    resolver (no dummy package, nothing installed), as the backend runs it.
 #
 # The chroot tarball lives in relspec's cache (XDG_CACHE_HOME): made by the
 # first --prepare when missing, and timed separately then. The layers need
@@ -113,6 +115,13 @@ def timed_layered(command, layers, lower, unpack_dir, apt)
   end
 end
 
+# +command+ as the backend runs it when the chroot holds the exact set
+# (SbuildBackend#command's installed: true): sbuild's null resolver, no
+# .debs to resolve from.
+def null_command(command)
+  [*command[0..-2].grep_v(/\A--extra-(package|repository)/), "--build-dep-resolver=null", command.last]
+end
+
 def report(label, host, times)
   puts format("  %-46s %s", label, times.map { |time| format("%5.1f s (ratio %4.1f)", time, time / host) }.join(", "))
 end
@@ -156,7 +165,7 @@ Dir.mktmpdir("relspec-bench-sbuild") do |dir|
     report("host backend", host, [host])
     report("sbuild before: tarball per build, no kept .debs", host, before)
     report("sbuild layers (one unpack per run), kept .debs", host, layered)
-    report("sbuild after: the same, build-dependency layers", host, after)
+    report("sbuild after: + build-dependency layers, null resolver", host, after)
   end
 
   unpack_dir = Relspec::Builder::UnpackDir.new
@@ -185,16 +194,21 @@ Dir.mktmpdir("relspec-bench-sbuild") do |dir|
     row("before#{tmpfs.empty? ? ' (no room on tmpfs)' : ', chroot on tmpfs'}", host, *timed_sbuild(command, tmpfs))
     row("after: layer", host, *timed_layered(command, layers, lower, unpack_dir, nil))
     row("after: layer, kept .debs", host, *timed_layered(command, layers, lower, unpack_dir, apt)) if apt
-    deps = nil
-    resolved = Timing.seconds { deps = dependency_layers.for(Relspec::Builder::Tool.new, request, lower) }
-    unless deps
-      puts format("| after: build-dependency layer: none (resolved in %.1f s; %s) |", resolved,
+    installed = nil
+    resolved = Timing.seconds { installed = dependency_layers.for(Relspec::Builder::Tool.new, request, lower) }
+    unless installed
+      puts format("| after: build-dependency layer: none, sbuild resolves (resolved in %.1f s; %s) |", resolved,
                   File.read(request.log).lines.grep(/^relspec: /).last&.chomp)
       next
     end
 
-    row(format("after: build-dependency layer (resolved%s in %.1f s)", round.zero? ? " and made" : "", resolved), host,
-        *timed_layered(command, layers, "#{deps}:#{lower}", unpack_dir, apt))
+    what = installed.folder ? "build-dependency layer" : "no build-dependency layer (none to install)"
+    under = installed.folder ? "#{installed.folder}:#{lower}" : lower
+    label = format("after: %s (resolved%s in %.1f s)", what, round.zero? && installed.folder ? " and made" : "", resolved)
+    row("#{label}, apt resolver", host, *timed_layered(command, layers, under, unpack_dir, apt))
+    next unless installed.complete
+
+    row("#{label}, null resolver", host, *timed_layered(null_command(command), layers, under, unpack_dir, nil))
   end
   unpack_dir.close
 end

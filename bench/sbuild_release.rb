@@ -18,6 +18,14 @@
 # packages' recorded durations per target, and the load average.
 #
 #   bundle exec ruby bench/sbuild_release.rb
+#
+# BENCH_CORE_SLICE=1: a slice of the Rock core instead (11 packages; issue
+# 48): the real buildconf's offline workspace (RockCoreRelease, from
+# ../shared's bundles), bookworm/amd64 only, selecting SLICE with what they
+# depend on (tools/class_loader with base/console_bridge, base/logging and
+# base/cmake: CMake; tools/metaruby with utilrb and facets,
+# base/templates/ruby_lib with hoe-yard, rake-compiler and rice: Ruby), built old
+# way then new way; not published.
 require "fileutils"
 require "open3"
 require "rbconfig"
@@ -28,6 +36,7 @@ require_relative "timing"
 ROOT = File.expand_path("..", __dir__)
 EXE = File.join(ROOT, "exe", "relspec")
 RELEASES = %w[demo-base demo-child].freeze
+SLICE = %w[tools/class_loader tools/metaruby base/templates/ruby_lib].freeze
 
 def run!(env, *command, chdir:)
   output, status = Open3.capture2e(env, *command, chdir: chdir)
@@ -64,38 +73,60 @@ def durations(dir, release)
   end
 end
 
-$stdout.sync = true
-dir = Dir.mktmpdir("relspec-bench-sbuild-release")
-failed = false
-begin
+# The demo's workspace and specs, from this checkout's HEAD, in +dir+;
+# [folder, releases].
+def demo(dir)
   demo = File.join(dir, "demo")
   FileUtils.mkdir_p(demo)
   run!({}, "sh", "-c", "git -C \"$1\" archive HEAD examples specs spec/support spec/fixtures | tar -x -C \"$2\"",
        "sh", ROOT, demo, chdir: dir)
   run!({}, RbConfig.ruby, File.join(demo, "examples", "create-workspace"), chdir: demo)
+  [demo, RELEASES]
+end
+
+# The Rock core's workspace and a spec of SLICE in +dir+; [folder, releases].
+def core_slice(dir)
+  require_relative "../spec/support/rock_core_workspace"
+  raise "the real package sets are not in #{FixtureWorkspace::BUNDLES}" unless RockCoreWorkspace.available?
+
+  release = RockCoreRelease.new(File.join(dir, "rock-core"), targets: ["bookworm/amd64"])
+  release.write
+  text = release.spec_text
+  raise "RockCoreRelease selects no longer rock.core" unless text.include?("select: [rock.core]")
+
+  File.write(release.spec_path, text.sub("select: [rock.core]", "select: [#{SLICE.join(', ')}]"))
+  [release.dir, ["rock-core"]]
+end
+
+$stdout.sync = true
+dir = Dir.mktmpdir("relspec-bench-sbuild-release")
+failed = false
+begin
+  slice = ENV["BENCH_CORE_SLICE"] == "1"
+  folder, releases = slice ? core_slice(dir) : demo(dir)
   # the chroot's root must reach the apt cache (relspec makes its folder its own)
   File.chmod(0o755, dir)
   ways = { "old" => { "RELSPEC_CHROOT_LAYERS" => "off", "RELSPEC_APT_CACHE" => "off", "RELSPEC_CCACHE" => "off" },
            "new" => { "RELSPEC_APT_CACHE" => File.join(dir, "apt"), "RELSPEC_CCACHE" => "off" } }
   totals = Hash.new(0.0)
-  RELEASES.each do |release|
+  releases.each do |release|
     spec = "specs/#{release}.yml"
-    relspec(demo, "plan", spec)
-    relspec(demo, "compile", spec, "--no-check")
+    relspec(folder, "plan", spec)
+    relspec(folder, "compile", spec, "--no-check")
     ways.each do |way, env|
       load = load_average
-      seconds, success = build(demo, spec, env)
+      seconds, success = build(folder, spec, env)
       failed ||= !success
       totals[way] += seconds
-      per_target = durations(demo, release).map do |target, (built, failures, sum)|
+      per_target = durations(folder, release).map do |target, (built, failures, sum)|
         format("%s %d built %d failed %.1f s", target, built, failures, sum)
       end
       puts format("%-10s %s way: %6.1f s wall (load %s before); build durations: %s", release, way, seconds, load,
                   per_target.join(", "))
     end
-    relspec(demo, "publish", spec)
+    relspec(folder, "publish", spec) unless slice
   end
-  puts format("both releases: old way %.1f s, new way %.1f s (%.0f %% less), load %s at the end", totals["old"],
+  puts format("all builds: old way %.1f s, new way %.1f s (%.0f %% less), load %s at the end", totals["old"],
               totals["new"], 100 * (1 - (totals["new"] / totals["old"])), load_average)
 ensure
   # a failed build's log is worth reading

@@ -28,6 +28,8 @@ module Relspec
       DEFAULT_DIR = "/var/cache/relspec/ccache"
       # where the build sees it
       MOUNTPOINT = "/var/cache/ccache"
+      # what sbuild installs in every build for it ($manual_depends)
+      PACKAGE = "ccache"
       # ccache's own limit: it removes the oldest objects beyond it
       MAX_SIZE = "5G"
       # sbuild's default PATH of a build, ccache's compiler links first
@@ -76,7 +78,7 @@ module Relspec
          "$build_environment = { 'CCACHE_DIR' => #{BuildUserFolder.perl(MOUNTPOINT)}, 'CCACHE_BASEDIR' => '/build', " \
          "'CCACHE_MAXSIZE' => #{BuildUserFolder.perl(MAX_SIZE)} };",
          "$path = #{BuildUserFolder.perl(PATH)};",
-         "$manual_depends = ['ccache'];"]
+         "$manual_depends = [#{BuildUserFolder.perl(PACKAGE)}];"]
       end
     end
   end

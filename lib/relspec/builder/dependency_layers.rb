@@ -30,14 +30,18 @@ module Relspec
       DEBS = "/mnt"
       # where it sees the target's kept .debs (AptCache; empty in a Debian chroot too)
       KEPT = "/srv"
+      CONFLICTS = %w[Build-Conflicts Build-Conflicts-Arch Build-Conflicts-Indep].freeze
 
       # +folder+: the run's folder of the target's layers (ChrootLayers);
       # +namespace+: unshare's options for the chroot's root
       # (ChrootLayers#namespace); +archives+: the folder of .debs kept for
       # the target (AptCache#target_dir), nil for none; +arch+: the
-      # target's architecture; +owner+: [uid, gid] of the chroot's root.
-      def initialize(folder, namespace:, archives:, arch:, owner:)
+      # target's architecture; +owner+: [uid, gid] of the chroot's root;
+      # +depends+: what sbuild adds to every build's Build-Depends besides
+      # its core ones (its $manual_depends: ccache when builds use it).
+      def initialize(folder, namespace:, archives:, arch:, owner:, depends: [])
         @folder = folder
+        @depends = depends
         @namespace = namespace
         @owner = owner
         @archives = archives
@@ -46,23 +50,46 @@ module Relspec
         @sets = {}
       end
 
-      # The folder to lay between +request+'s layer and +lower+ (the lower
-      # layer's folder), nil for none; +tool+ runs apt into +request+'s log.
+      # What a build finds installed when its set is known and in place:
+      # +folder+, the layer to lay between its own and the lower one (nil
+      # when the set is empty: all in the lower layer already); +complete+,
+      # true when that is all the build needs (docs/build.md, "No resolver
+      # on an exact layer"): sbuild then runs its null resolver.
+      Installed = Struct.new(:folder, :complete, keyword_init: true)
+
+      # What +request+ finds installed over +lower+ (the lower layer's
+      # folder): an Installed, nil when sbuild must resolve and install the
+      # build-dependencies itself; +tool+ runs apt into +request+'s log.
       def for(tool, request, lower)
         return nil unless request.repositories.all?(&:local?)
 
+        fields = dsc_fields(request)
+        return nil unless fields
+
         Dir.mktmpdir("resolve-", @folder) do |scratch|
           index = DebIndex.new(scratch, debs(request))
-          set = resolve(tool, request, lower, index, scratch)
+          set = resolve(tool, request, lower, index, scratch, fields)
           next nil if set.nil?
-          # all in the chroot already: nothing to lay under the build
-          next say(request.log, "no build-dependency layer: none to install") if set.empty?
 
-          layer(tool, request, lower, index, set)
+          installed(request.log, fields, set.empty? ? nil : layer(tool, request, lower, index, set), set)
         end
       end
 
       private
+
+      # A build's Installed, nil when its set's layer could not be made. A
+      # .dsc with Build-Conflicts keeps sbuild's resolver: apt removes a
+      # conflicting package of the chroot before the build, which the
+      # simulation does not (it resolves the Build-Depends only).
+      def installed(log, fields, folder, set)
+        return nil if folder.nil? && !set.empty?
+
+        # all in the chroot already: nothing to lay under the build
+        say(log, "no build-dependency layer: none to install") if set.empty?
+        complete = CONFLICTS.all? { |name| fields[name].to_s.strip.empty? }
+        say(log, "all build-dependencies installed: sbuild's null resolver") if complete
+        Installed.new(folder: folder, complete: complete).freeze
+      end
 
       # One lock per set: builds of other sets go on beside it.
       def layer(tool, request, lower, index, set)
@@ -92,7 +119,7 @@ module Relspec
         request.repositories.flat_map { |repository| repository.pool_debs(request.target) } + local
       end
 
-      def resolve(tool, request, lower, index, scratch)
+      def resolve(tool, request, lower, index, scratch, fields)
         lists = File.join(scratch, "lists")
         options = ["-o", "Dir::Etc::sourcelist=#{index.sources}", "-o", "Dir::State::Lists=#{lists}"]
         tool.run(request.source, index.update_command(lower, lists, scratch), log: request.log, name: "indexing the build's .debs")
@@ -101,17 +128,23 @@ module Relspec
           File.symlink(list, File.join(lists, File.basename(list))) if File.file?(list) && File.basename(list) != "lock"
         end
         output = File.join(scratch, "simulation")
-        tool.run(request.source, BuildDependencySet.simulate_command(lower, scratch, build_depends(request.dsc), options),
+        tool.run(request.source, BuildDependencySet.simulate_command(lower, scratch, build_depends(fields) + @depends, options),
                  log: output, name: "resolving the build-dependencies")
         BuildDependencySet.from_simulation(File.read(output), source: request.source)
-      rescue BuildError, SystemCallError, Apt::Deb822::ParseError => e
+      rescue BuildError, SystemCallError => e
         # sbuild resolves them itself and says what is wrong
         say(request.log, "no build-dependency layer: #{e.message}")
       end
 
+      def dsc_fields(request)
+        Apt::Deb822.parse(File.read(request.dsc)).first || {}
+      rescue SystemCallError, Apt::Deb822::ParseError => e
+        # sbuild reads it itself and says what is wrong
+        say(request.log, "no build-dependency layer: #{e.message}")
+      end
+
       # The .dsc's build-dependency fields (sbuild builds with --arch-all).
-      def build_depends(dsc)
-        fields = Apt::Deb822.parse(File.read(dsc)).first || {}
+      def build_depends(fields)
         %w[Build-Depends Build-Depends-Arch Build-Depends-Indep].filter_map do |name|
           fields[name]&.gsub(/\s+/, " ")&.strip
         end.reject(&:empty?)

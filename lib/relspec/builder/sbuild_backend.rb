@@ -103,14 +103,16 @@ module Relspec
       # sbuild's command line for +request+, building in the folder +work+
       # on the chroot tarball +tarball+; the same on this machine and in a
       # Slurm job. +local_debs+ may name folders of .debs (sbuild takes
-      # every .deb in them).
-      def command(request, work, tarball = chroot(request.target).path)
+      # every .deb in them). +installed+: the chroot holds exactly the
+      # build's build-dependencies (DependencyLayers::Installed#complete):
+      # sbuild's null resolver, which installs nothing, and no packages
+      # to resolve from (docs/build.md, "No resolver on an exact layer").
+      def command(request, work, tarball = chroot(request.target).path, installed: false)
+        sources = installed ? ["--build-dep-resolver=null"] : [*repository_options(request), *extra_packages(request)]
         ["sbuild", "--chroot-mode=unshare", "--chroot=#{tarball}",
          "--dist=#{request.target.codename}", "--arch=#{request.target.arch}", "--arch-all", "--no-source",
          "--no-run-lintian", "--no-run-piuparts", "--no-run-autopkgtest", "--no-apt-upgrade",
-         "--no-apt-distupgrade", "--nolog", "--build-dir=#{work}",
-         *repository_options(request), *request.local_debs.map { |deb| "--extra-package=#{deb}" },
-         request.dsc]
+         "--no-apt-distupgrade", "--nolog", "--build-dir=#{work}", *sources, request.dsc]
       end
 
       # The shell lines of a Slurm job that builds +request+ in +work+
@@ -128,20 +130,25 @@ module Relspec
       private
 
       # Runs sbuild; +lines+: more lines of its configuration. In a Slurm job
-      # (#job_steps) none of them: its nodes have other folders.
-      def run(request, work, command, lines = [])
-        environment = @unpack_dir.environment([*lines, *@ccache&.config_lines, *@apt_cache&.config_lines(request.target)])
+      # (#job_steps) none of them: its nodes have other folders. +downloads+:
+      # whether apt may download build-dependencies (the target's kept .debs).
+      def run(request, work, command, lines = [], downloads: true)
+        apt = downloads ? @apt_cache&.config_lines(request.target) : nil
+        environment = @unpack_dir.environment([*lines, *@ccache&.config_lines, *apt])
         @tool.run(request.source, command, log: request.log, chdir: work, env: environment, name: "sbuild")
       end
 
-      # Runs sbuild on a layer of its own over the target's unpacked chroot.
+      # Runs sbuild on a layer of its own over the target's unpacked chroot,
+      # and over the layer of its build-dependencies when there is one.
       def run_layered(layers, request, work)
         lower = layers.lower(@tool, request.source, request.log)
-        deps = dependencies(request.target, layers)&.for(@tool, request, lower)
-        lower = "#{deps}:#{lower}" if deps
+        installed = dependencies(request.target, layers)&.for(@tool, request, lower)
+        lower = "#{installed.folder}:#{lower}" if installed&.folder
+        complete = installed&.complete || false
         layers.layer do |upper, overlay_work, merged|
-          command = layers.wrap(command(request, work, layers.empty_tarball), lower, upper, overlay_work, merged)
-          run(request, work, command, layers.config_lines(merged))
+          sbuild = command(request, work, layers.empty_tarball, installed: complete)
+          run(request, work, layers.wrap(sbuild, lower, upper, overlay_work, merged), layers.config_lines(merged),
+              downloads: !complete)
         end
       end
 
@@ -164,7 +171,8 @@ module Relspec
           @dependencies[target.to_s] ||=
             DependencyLayers.new(layers.folder, namespace: layers.namespace, arch: target.arch,
                                                 owner: [layers.uids.first, layers.gids.first],
-                                                archives: @apt_cache&.target_folder(target))
+                                                archives: @apt_cache&.target_folder(target),
+                                                depends: @ccache ? [Ccache::PACKAGE] : [])
         end
       end
 
@@ -181,6 +189,10 @@ module Relspec
           line = ["deb", *options, repository.uri, repository.suite, *repository.components].join(" ")
           ["--extra-repository=#{line}", *(repository.keyring ? ["--extra-repository-key=#{repository.keyring}"] : [])]
         end
+      end
+
+      def extra_packages(request)
+        request.local_debs.map { |deb| "--extra-package=#{deb}" }
       end
 
       # The .debs a local repository holds for the target (apt picks by version).

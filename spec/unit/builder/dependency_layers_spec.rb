@@ -37,13 +37,14 @@ RSpec.describe Relspec::Builder::DependencyLayers do
     end
   end
 
-  def layers
-    described_class.new(@dir, namespace: %w[unshare --user], archives: nil, arch: "amd64", owner: [Process.uid, Process.gid])
+  def layers(depends: [])
+    described_class.new(@dir, namespace: %w[unshare --user], archives: nil, arch: "amd64", owner: [Process.uid, Process.gid],
+                              depends: depends)
   end
 
-  def request(source, repositories: [])
+  def request(source, repositories: [], more: "")
     dsc = File.join(@dir, "#{source}.dsc")
-    File.write(dsc, "Source: #{source}\nBuild-Depends: debhelper-compat (= 13),\n cmake\n")
+    File.write(dsc, "Source: #{source}\nBuild-Depends: debhelper-compat (= 13),\n cmake\n#{more}")
     Relspec::Builder::Request.new(source: source, version: "1", dsc: dsc, target: Relspec::Target.new("bookworm", "amd64"),
                                   repositories: repositories, local_debs: [], output_dir: @dir,
                                   log: File.join(@dir, "#{source}.log"))
@@ -55,7 +56,10 @@ RSpec.describe Relspec::Builder::DependencyLayers do
   it "makes a layer per exact set, once, and gives it to every build of that set only" do
     apt = tool.new({ "a" => cmake + base, "b" => base + cmake, "c" => cmake, "d" => cmake.sub("3.25.1-1", "3.25.1-2") + base })
     dependency_layers = layers
-    found = %w[a b c d].map { |source| dependency_layers.for(apt, request(source), "/run/lower") }
+    installed = %w[a b c d].map { |source| dependency_layers.for(apt, request(source), "/run/lower") }
+    # each the whole of its build's needs: sbuild resolves nothing
+    expect(installed.map(&:complete)).to eq([true] * 4)
+    found = installed.map(&:folder)
     expect(found[0]).to eq(found[1])
     expect(found.uniq.size).to eq(3)
     expect(found).to all(satisfy { |dir| File.basename(dir) == "upper" && File.directory?(dir) })
@@ -68,7 +72,8 @@ RSpec.describe Relspec::Builder::DependencyLayers do
     at = command.index { |part| part.include?('exec chroot "$@"') }
     expect(command[at + 1, 4]).to eq(["sh", File.join(File.dirname(found[0]), "merged"), "sh", "-c"])
     expect(apt.installs.first.join(" ")).to include("apt-get install --yes --no-install-recommends")
-    expect(File.read(File.join(@dir, "b.log"))).to match(/^relspec: build-dependency layer \h{16} \(2 packages\) in /)
+    expect(File.read(File.join(@dir, "b.log"))).to match(/^relspec: build-dependency layer \h{16} \(2 packages\) in .*\n/)
+    expect(File.read(File.join(@dir, "b.log"))).to end_with("relspec: all build-dependencies installed: sbuild's null resolver\n")
     # the simulation's scratch folders are gone
     expect(Dir.children(@dir).grep(/\Adeps-/).size).to eq(3)
   end
@@ -83,16 +88,39 @@ RSpec.describe Relspec::Builder::DependencyLayers do
       File.write(options[:log], "") if options[:name] == "resolving the build-dependencies"
       File.write(File.join(command[4], "Packages"), "") if options[:name] == "indexing the build's .debs"
     end
-    expect(layers.for(apt, request("a"), "/run/lower")).to be_nil
+    expect(layers.for(apt, request("a"), "/run/lower").folder).to be_nil
     expect(seen.first.last(2)).to eq(["debhelper-compat (= 13), cmake", "build-essential, fakeroot"])
+    # and what sbuild adds to every build (its $manual_depends): the null
+    # resolver must find it installed too
+    layers(depends: ["ccache"]).for(apt, request("a"), "/run/lower")
+    expect(seen.last.last(3)).to eq(["debhelper-compat (= 13), cmake", "ccache", "build-essential, fakeroot"])
   end
 
-  it "gives none when the set cannot be known here, is empty, or its layer cannot be made (and tries that once)" do
+  it "gives no layer but the null resolver when the set is empty (all in the lower layer)" do
+    installed = layers.for(tool.new({ "e" => "" }), request("e"), "/run/lower")
+    expect([installed.folder, installed.complete]).to eq([nil, true])
+    expect(installed).to be_frozen
+    expect(File.read(File.join(@dir, "e.log"))).to eq("relspec: no build-dependency layer: none to install\n" \
+                                                      "relspec: all build-dependencies installed: sbuild's null resolver\n")
+  end
+
+  it "keeps sbuild's resolver for a .dsc with Build-Conflicts (apt would remove what conflicts), on the layer still" do
+    apt = tool.new({ "a" => cmake, "e" => "", "n" => cmake })
+    dependency_layers = layers
+    with_layer = dependency_layers.for(apt, request("a", more: "Build-Conflicts-Indep: libfoo-dev\n"), "/run/lower")
+    expect(with_layer.complete).to be(false)
+    expect(File.basename(with_layer.folder)).to eq("upper")
+    expect(File.read(File.join(@dir, "a.log"))).not_to include("null resolver")
+    without = dependency_layers.for(apt, request("e", more: "Build-Conflicts: libfoo-dev\n"), "/run/lower")
+    expect([without.folder, without.complete]).to eq([nil, false])
+    # an empty field conflicts with nothing
+    expect(dependency_layers.for(apt, request("n", more: "Build-Conflicts-Arch: \n"), "/run/lower").complete).to be(true)
+  end
+
+  it "gives none when the set cannot be known here or its layer cannot be made (and tries that once)" do
     remote = Relspec::Builder::Repository.new(uri: "http://example.org/r", suite: "bookworm", components: ["main"])
-    apt = tool.new({ "a" => cmake, "e" => "", "f" => "Inst rel-x (1;x localhost [all])\n" })
+    apt = tool.new({ "a" => cmake, "f" => "Inst rel-x (1;x localhost [all])\n" })
     expect(layers.for(apt, request("a", repositories: [remote]), "/run/lower")).to be_nil
-    expect(layers.for(apt, request("e"), "/run/lower")).to be_nil
-    expect(File.read(File.join(@dir, "e.log"))).to eq("relspec: no build-dependency layer: none to install\n")
     expect(layers.for(apt, request("f"), "/run/lower")).to be_nil
     expect(File.read(File.join(@dir, "f.log"))).to include('relspec: no build-dependency layer: f: apt would install a package with the version "1;x"')
     expect(apt.installs).to be_empty

@@ -16,11 +16,43 @@ RSpec.describe Relspec::Builder::SbuildBackend do
     end
   end
 
-  it "runs sbuild with the environment of where the chroot is unpacked, of the compiler cache and of the target's apt download cache" do
-    Dir.mktmpdir do |dir|
-      cache = File.join(dir, "chroots")
+  # A folder of chroot tarballs holding bookworm/amd64's (empty: the tool never reads it).
+  def tarball_cache(dir)
+    File.join(dir, "chroots").tap do |cache|
       FileUtils.mkdir_p(cache)
       File.write(File.join(cache, "bookworm-amd64.tar.zst"), "")
+    end
+  end
+
+  # UnpackDir's part for layers: the run's folders below +root+; records the
+  # configuration lines of every build (+extras+, the last one +extra+).
+  let(:layer_folders) do
+    Class.new do
+      attr_reader :extras
+
+      def initialize(root)
+        @root = root
+        @extras = []
+      end
+
+      def folder(name)
+        File.join(@root, name).tap { |path| FileUtils.mkdir_p(path) }
+      end
+
+      def environment(extra)
+        @extras << extra
+        {}
+      end
+
+      def extra
+        @extras.last
+      end
+    end
+  end
+
+  it "runs sbuild with the environment of where the chroot is unpacked, of the compiler cache and of the target's apt download cache" do
+    Dir.mktmpdir do |dir|
+      cache = tarball_cache(dir)
       tool = recorder.new([])
       unpack = Class.new do
         attr_reader :extra
@@ -54,28 +86,11 @@ RSpec.describe Relspec::Builder::SbuildBackend do
 
   it "builds on a layer of its own over the target's chroot, unpacked once, and removes the layer after the build" do
     Dir.mktmpdir do |dir|
-      cache = File.join(dir, "chroots")
-      FileUtils.mkdir_p(cache)
+      cache = tarball_cache(dir)
       tarball = File.join(cache, "bookworm-amd64.tar.zst")
-      File.write(tarball, "")
       tool = recorder.new([])
       folders = File.join(dir, "run")
-      unpack = Class.new do
-        attr_reader :extra
-
-        def initialize(root)
-          @root = root
-        end
-
-        def folder(name)
-          File.join(@root, name).tap { |path| FileUtils.mkdir_p(path) }
-        end
-
-        def environment(extra)
-          @extra = extra
-          {}
-        end
-      end.new(folders)
+      unpack = layer_folders.new(folders)
       ids = [[Process.uid, 1], [Process.gid, 1]]
       backend = described_class.new(tool, {}, chroot_cache: cache, unpack_dir: unpack, ccache: nil, apt_cache: nil,
                                               layer_ids: ids, dependency_layers: false)
@@ -111,6 +126,74 @@ RSpec.describe Relspec::Builder::SbuildBackend do
       expect(unpack.extra.drop(1)).to include("$apt_update = 0;", "$purge_session = 'never';",
                                               "$unshare_tmpdir_template = '#{File.dirname(merged)}/session.XXXXXXXXXX';")
       expect(File.size(File.join(folders, "bookworm-amd64", "empty.tar"))).to eq(1024)
+    end
+  end
+
+  # The build-dependency layers' resolution, answered per source as apt
+  # would (DependencyLayers resolves for real in sbuild_spec.rb).
+  let(:resolver) do
+    Class.new do
+      attr_reader :runs
+
+      def initialize(answers)
+        @answers = answers
+        @runs = []
+      end
+
+      def run(source, command, log:, chdir: nil, env: {}, stdin: nil, name: nil)
+        @runs << { source: source, command: command, env: env, name: name }
+        case name
+        when "indexing the build's .debs" then File.write(File.join(command[4], "Packages"), "")
+        when "resolving the build-dependencies" then File.write(log, @answers.fetch(source))
+        end
+      end
+    end
+  end
+
+  it "runs sbuild's null resolver, with no .debs to resolve from nor any to download, when the chroot holds the exact set" do
+    Dir.mktmpdir do |dir|
+      cache = tarball_cache(dir)
+      unpack = layer_folders.new(File.join(dir, "run"))
+      folder = Relspec::Builder::BuildUserFolder.new(File.join(dir, "apt"), owner: [Process.uid, Process.gid],
+                                                                            what: "apt download cache", variable: "V")
+      apt_cache = Relspec::Builder::AptCache.new(folder)
+      deb = File.join(dir, "rock-r-base_1.0-1_all.deb")
+      File.write(deb, "")
+      cmake = "Inst cmake (3.25.1-1 Debian:12.11/stable [amd64])\n"
+      tool = resolver.new({ "empty" => "", "cmake" => cmake, "conflicts" => cmake })
+      ccache = Relspec::Builder::Ccache.new(File.join(dir, "ccache"), owner: [Process.uid, Process.gid])
+      backend = described_class.new(tool, {}, chroot_cache: cache, unpack_dir: unpack, ccache: ccache, apt_cache: apt_cache,
+                                              layer_ids: [[Process.uid, 1], [Process.gid, 1]])
+      allow(Relspec::Builder::Chroot).to receive(:host_arch).and_return("amd64")
+      sbuilds = %w[empty cmake conflicts].map do |source|
+        dsc = File.join(dir, "#{source}.dsc")
+        File.write(dsc, "Source: #{source}\nBuild-Depends: cmake\n#{"Build-Conflicts: foo\n" if source == 'conflicts'}")
+        backend.build(Relspec::Builder::Request.new(source: source, version: "1.0-1", dsc: dsc,
+                                                    target: Relspec::Target.new("bookworm", "amd64"), repositories: [],
+                                                    local_debs: [deb], output_dir: File.join(dir, "out-#{source}"),
+                                                    log: File.join(dir, "#{source}.log")))
+        tool.runs.select { |run| run[:name] == "sbuild" }.last[:command]
+      end
+      empty, on_layer, conflicts = sbuilds
+      # the set holds what sbuild adds for ccache ($manual_depends)
+      simulation = tool.runs.find { |run| run[:name] == "resolving the build-dependencies" }[:command]
+      expect(simulation.last(3)).to eq(["cmake", "ccache", "build-essential, fakeroot"])
+      # the set all in the lower layer, or in the layer under the build
+      [empty, on_layer].each do |command|
+        expect(command).to include("--build-dep-resolver=null")
+        expect(command.grep(/--extra-package/)).to be_empty
+      end
+      expect(empty[9]).to eq(File.join(dir, "run", "bookworm-amd64", "lower"))
+      expect(on_layer[9]).to match(%r{/deps-\h{16}/upper:.*/lower\z})
+      # nothing to download: no apt cache bound in, no .debs linked or kept
+      expect(unpack.extras[0].join).not_to include("relspec-apt", "#{dir}/apt")
+      expect(unpack.extras[1].join).not_to include("relspec-apt", "#{dir}/apt")
+      expect(unpack.extras[1]).to include(*ccache.config_lines)
+      # Build-Conflicts: apt removes what conflicts, on the same layer
+      expect(conflicts).not_to include("--build-dep-resolver=null")
+      expect(conflicts).to include("--extra-package=#{deb}")
+      expect(conflicts[9]).to eq(on_layer[9])
+      expect(unpack.extras[2]).to end_with(*ccache.config_lines, *apt_cache.config_lines(Relspec::Target.new("bookworm", "amd64")))
     end
   end
 
