@@ -32,6 +32,11 @@ module Relspec
       ROOT = "/"
       # device nodes cannot be made in a user namespace (sbuild skips them too)
       DEVICES = %w[urandom random full null console zero tty ptmx].map { |name| "--exclude=./dev/#{name}" }.freeze
+      # Shell for a chroot at "$1" entered as its root, as every sbuild
+      # session has it: the host's device nodes bound (onto a file made
+      # where the tarball has none, DEVICES) and /proc.
+      SYSTEM_MOUNTS = "for f in null zero full random urandom; do { [ -e \"$1/dev/$f\" ] || touch \"$1/dev/$f\"; } && " \
+                      "mount -o bind \"/dev/$f\" \"$1/dev/$f\" || exit 1; done && mount -t proc proc \"$1/proc\""
 
       # [first, count] of +user+'s range in +file+ (/etc/subuid, /etc/subgid).
       def self.range(file, user)
@@ -133,10 +138,8 @@ module Relspec
       # build: as the chroot's root (sbuild's mapping), with the device
       # nodes, /proc and the name servers every sbuild session gives it.
       def refresh_command(lower)
-        devices = "for f in null zero full random urandom; do touch \"$1/dev/$f\" && " \
-                  "mount -o bind \"/dev/$f\" \"$1/dev/$f\" || exit 1; done"
         [*namespace, "--mount", "--pid", "--fork", "--", "sh", "-c",
-         "#{devices} && mount -t proc proc \"$1/proc\" && cat /etc/resolv.conf > \"$1/etc/resolv.conf\" && " \
+         "#{SYSTEM_MOUNTS} && cat /etc/resolv.conf > \"$1/etc/resolv.conf\" && " \
          "exec chroot \"$1\" apt-get -o Acquire::Languages=none update", "sh", lower]
       end
 

@@ -6,6 +6,7 @@ require_relative "../apt/deb822"
 require_relative "../error"
 require_relative "apt_cache"
 require_relative "build_dependency_set"
+require_relative "chroot_layers"
 require_relative "deb_index"
 
 module Relspec
@@ -175,13 +176,12 @@ module Relspec
         mounts = 'mount -t overlay overlay -o "lowerdir=$1,upperdir=$2,workdir=$3" "$4" && ' \
                  "mount --bind \"$5\" \"$4#{DEBS}\" && " \
                  "{ [ -z \"$6\" ] || mount --bind \"$6\" \"$4#{KEPT}\"; } && shift 6 && exec \"$@\""
-        devices = "for f in null zero full random urandom; do mount -o bind \"/dev/$f\" \"$1/dev/$f\" || exit 1; done"
         install = "DEBIAN_FRONTEND=noninteractive apt-get install --yes --no-install-recommends " \
                   '-o Dpkg::Options::=--force-confold "$@"'
         install = "#{AptCache.link_script(KEPT)} && #{install} && #{AptCache.keep_script(KEPT)}" if @archives
         ["unshare", "--mount", "--propagation", "private", "--", "sh", "-c", mounts, "sh", lower, upper, work, merged,
          index.dir, @archives.to_s, *@namespace, "--mount", "--pid", "--fork", "--", "sh", "-c",
-         "#{devices} && mount -t proc proc \"$1/proc\" && exec chroot \"$@\"", "sh", merged,
+         "#{ChrootLayers::SYSTEM_MOUNTS} && exec chroot \"$@\"", "sh", merged,
          "sh", "-c", "#{install} && apt-get clean", "sh", *set.packages.map { |package| argument(package, index) }]
       end
 

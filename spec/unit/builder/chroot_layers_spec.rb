@@ -73,6 +73,7 @@ RSpec.describe Relspec::Builder::ChrootLayers do
     expect(command).to include("--mount", "--pid", "--fork")
     expect(command.last(2)).to eq(["sh", lower])
     expect(command[-3]).to end_with('exec chroot "$1" apt-get -o Acquire::Languages=none update')
+    expect(command[-3]).to start_with(described_class::SYSTEM_MOUNTS)
     expect(File.directory?(lower)).to be(true)
   end
 

@@ -71,6 +71,8 @@ RSpec.describe Relspec::Builder::DependencyLayers do
     command = apt.installs.first
     at = command.index { |part| part.include?('exec chroot "$@"') }
     expect(command[at + 1, 4]).to eq(["sh", File.join(File.dirname(found[0]), "merged"), "sh", "-c"])
+    # with the device nodes and /proc of every sbuild session (the lower layer's refresh has the same)
+    expect(command[at]).to start_with(Relspec::Builder::ChrootLayers::SYSTEM_MOUNTS)
     expect(apt.installs.first.join(" ")).to include("apt-get install --yes --no-install-recommends")
     expect(File.read(File.join(@dir, "b.log"))).to match(/^relspec: build-dependency layer \h{16} \(2 packages\) in .*\n/)
     expect(File.read(File.join(@dir, "b.log"))).to end_with("relspec: all build-dependencies installed: sbuild's null resolver\n")
