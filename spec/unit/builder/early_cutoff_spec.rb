@@ -4,26 +4,13 @@ require_relative "../unit_helper"
 require "relspec/builder/early_cutoff"
 require "relspec/builder/build_plan"
 require "relspec/builder/build_results"
+require_relative "../../support/cutoff_verdicts"
 
 # The run's side of the early cutoff: which candidates are not built, and
 # the kept ones a build needs built first. The verdicts are a stand-in
 # here (what Abi::InterfaceVerdicts decides has its own spec); the real
 # builds are spec/relspec/builder/early_cutoff_build_spec.rb's.
 RSpec.describe Relspec::Builder::EarlyCutoff do
-  # keep(entry): a keep for the sources of +keeps+; revoke: recorded.
-  Verdicts = Struct.new(:keeps, :revoked) do
-    def keep(entry)
-      return nil unless entry.cutoff
-
-      Relspec::Builder::BuildResults::Cutoff.new(keeps: "1-1", verdict: keeps.include?(entry.source) ? "keep" : "rebuild",
-                                                 reason: "r", evidence: [])
-    end
-
-    def revoke(source, reason)
-      revoked << [source, reason]
-    end
-  end
-
   def entry(source, needs = [], candidate: false)
     cutoff = candidate ? Relspec::Builder::BuildPlan::Cutoff.new(keeps: "1-1", because: needs) : nil
     Relspec::Builder::BuildPlan::Entry.new(package: "base/#{source}", source: source, version: "1-2", dsc: "x.dsc",
@@ -34,12 +21,12 @@ RSpec.describe Relspec::Builder::EarlyCutoff do
   let(:entries) { [entry("lib"), entry("mid", ["lib"], candidate: true), entry("top", ["mid"], candidate: true), entry("app", ["top"])] }
 
   it "keeps the candidates decided keep, never the others" do
-    cutoff = described_class.new(Verdicts.new(%w[mid], []), entries)
+    cutoff = described_class.new(CutoffVerdicts.new(%w[mid], []), entries)
     expect(entries.map { |one| cutoff.keep?(one) }).to eq([false, true, false, false])
   end
 
   it "builds the kept packages a build needs first, in plan order, once, and records why" do
-    verdicts = Verdicts.new(%w[mid top], [])
+    verdicts = CutoffVerdicts.new(%w[mid top], [])
     cutoff = described_class.new(verdicts, entries)
     entries.each { |one| cutoff.keep?(one) }
     built = []
@@ -53,7 +40,7 @@ RSpec.describe Relspec::Builder::EarlyCutoff do
   end
 
   it "counts a keep of an earlier run, and fails the build that needs it when it cannot be built" do
-    cutoff = described_class.new(Verdicts.new([], []), entries, kept: %w[top])
+    cutoff = described_class.new(CutoffVerdicts.new([], []), entries, kept: %w[top])
     expect { cutoff.build_kept_for(entries.last) { raise Relspec::BuildError, "dpkg-buildpackage failed" } }
       .to raise_error(Relspec::BuildError, "build-dependency top failed")
     expect(cutoff.drain.map { |outcome| [outcome.entry.source, outcome.status, outcome.reason] })

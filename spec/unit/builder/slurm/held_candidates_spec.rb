@@ -4,28 +4,14 @@ require_relative "../../unit_helper"
 require "relspec/builder/slurm/held_candidates"
 require "relspec/builder/build_plan"
 require "relspec/builder/build_results"
+require_relative "../../../support/cutoff_verdicts"
 
 # Which early cutoff candidates of a Slurm run wait for their decision,
 # when they are ready, and what a decision does. The verdicts are a
 # stand-in (Abi::InterfaceVerdicts has its own spec); the real cluster and
 # builds are spec/relspec/builder/slurm_spec.rb's.
 RSpec.describe Relspec::Builder::Slurm::HeldCandidates do
-  # keep(entry): a keep for the sources of +keeps+; revoke: recorded.
-  stand_in = Struct.new(:keeps, :revoked, :deciding) do
-    def keep(entry)
-      return nil unless entry.cutoff
-
-      Relspec::Builder::BuildResults::Cutoff.new(keeps: "1-1", verdict: keeps.include?(entry.source) ? "keep" : "rebuild",
-                                                 reason: "r", evidence: [])
-    end
-
-    def revoke(source, reason)
-      revoked << [source, reason]
-    end
-
-    def deciding? = deciding
-  end
-  let(:verdicts) { stand_in.new(%w[mid top], [], true) }
+  let(:verdicts) { CutoffVerdicts.new(%w[mid top], [], true) }
 
   def entry(source, needs = [], candidate: false)
     cutoff = candidate ? Relspec::Builder::BuildPlan::Cutoff.new(keeps: "1-1", because: needs) : nil
@@ -56,7 +42,7 @@ RSpec.describe Relspec::Builder::Slurm::HeldCandidates do
   end
 
   it "holds nothing when the run does not decide (the cutoff refused)" do
-    cutoff = held([lib, mid, top], with: stand_in.new(%w[mid top], [], false))
+    cutoff = held([lib, mid, top], with: CutoffVerdicts.new(%w[mid top], [], false))
     expect([mid, top].map { |one| cutoff.undecided?(one.source) }).to eq([false, false])
   end
 
@@ -73,7 +59,7 @@ RSpec.describe Relspec::Builder::Slurm::HeldCandidates do
   # mid kept; top's closure changed elsewhere (its verdict: rebuild): top
   # names mid's new version, so mid is built after all, first.
   it "revokes the keeps in the closure of a candidate decided rebuild" do
-    only_mid = stand_in.new(%w[mid], [], true)
+    only_mid = CutoffVerdicts.new(%w[mid], [], true)
     cutoff = held([lib, mid, top], with: only_mid)
     expect(cutoff.decide(mid).keep).to be(true)
     expect(cutoff.decide(top)).to have_attributes(keep: false, revoke: [mid])
