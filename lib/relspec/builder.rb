@@ -126,7 +126,10 @@ module Relspec
             prepared = slurm? && !@prepare_only ? false : backend.prepare(target, log: prepare_log)
             next TargetReport.new(target: target, dir: dir, outcomes: [], reused: 0, prepared: prepared) if @prepare_only
 
-            build_target(target, dir, plan, backend, Repositories.of(lineage, target.codename), prepared)
+            report = build_target(target, dir, plan, backend, Repositories.of(lineage, target.codename), prepared)
+            # its builds have ended: the next target starts with what they held freed
+            backend.finish_target(target)
+            report
           end
         end
       rescue Interrupt

@@ -1,6 +1,7 @@
 # frozen_string_literal: true
 
 require "fileutils"
+require "open3"
 require "tmpdir"
 require_relative "../apt/deb822"
 require_relative "../error"
@@ -8,6 +9,8 @@ require_relative "apt_cache"
 require_relative "build_dependency_set"
 require_relative "chroot_layers"
 require_relative "deb_index"
+require_relative "layer_budget"
+require_relative "unpack_dir"
 
 module Relspec
   module Builder
@@ -25,6 +28,11 @@ module Relspec
     # for it (a lock per set). A set that cannot be known here (a remote
     # --extra-repository, whose lists only sbuild fetches) or a layer that
     # cannot be made gives nil: the build installs its own, as without.
+    #
+    # The kept layers are bounded (LayerBudget): before one is made, those
+    # no build uses are given up, least recently used first, and when that
+    # cannot make room the build goes without one. A layer is in use from
+    # #for until #release (#use does both), counted under the lock.
     class DependencyLayers
       # where the layer's install sees the build's own .debs (empty in a
       # Debian chroot, so binding onto it writes nothing into the layer)
@@ -39,9 +47,19 @@ module Relspec
       # the target (AptCache#target_dir), nil for none; +arch+: the
       # target's architecture; +owner+: [uid, gid] of the chroot's root;
       # +depends+: what sbuild adds to every build's Build-Depends besides
-      # its core ones (its $manual_depends: ccache when builds use it).
-      def initialize(folder, namespace:, archives:, arch:, owner:, depends: [])
+      # its core ones (its $manual_depends: ccache when builds use it);
+      # +budget+: the bound on the kept layers (LayerBudget), nil for none;
+      # +room+: [bytes free on the layers' file system, bytes of memory
+      # available or nil when not on tmpfs], either nil when unknown;
+      # +measure+: a layer's size in bytes.
+      def initialize(folder, namespace:, archives:, arch:, owner:, depends: [], budget: nil,
+                     room: -> { DependencyLayers.room(folder) }, measure: DependencyLayers.method(:measure))
         @folder = folder
+        @budget = budget
+        @room = room
+        @measure = measure
+        @estimate = LayerBudget::ESTIMATE
+        @used = 0
         @depends = depends
         @namespace = namespace
         @owner = owner
@@ -56,11 +74,41 @@ module Relspec
       # when the set is empty: all in the lower layer already); +complete+,
       # true when that is all the build needs (docs/build.md, "No resolver
       # on an exact layer"): sbuild then runs its null resolver.
-      Installed = Struct.new(:folder, :complete, keyword_init: true)
+      # +key+: the set's, nil when no layer is laid (#release).
+      Installed = Struct.new(:folder, :complete, :key, keyword_init: true)
+
+      # Bytes of +dir+ (du: what a tmpfs layer takes of memory).
+      def self.measure(dir)
+        output, status = Open3.capture2("du", "-s", "-x", "-B1", dir, err: File::NULL)
+        status.success? ? output.to_i : 0
+      end
+
+      # [free bytes, available memory] for layers in +folder+; memory
+      # counts only when the folder is on tmpfs.
+      def self.room(folder, meminfo: "/proc/meminfo")
+        [UnpackDir.free_bytes(folder), tmpfs?(folder) ? UnpackDir.available_memory(meminfo) : nil]
+      end
+
+      def self.tmpfs?(folder)
+        output, status = Open3.capture2("stat", "-f", "-c", "%T", folder, err: File::NULL)
+        status.success? && output.strip == "tmpfs"
+      end
+
+      # The folder of a target's layers => the options that bound them
+      # (LayerBudget.bytes of its file system; +override+: the text of
+      # RELSPEC_LAYER_BUDGET, refused here, before any build, when no size).
+      def self.bound(override)
+        bytes = override && LayerBudget.parse(override)
+        lambda do |folder|
+          { budget: LayerBudget.new(budget: LayerBudget.bytes(UnpackDir.size_bytes(folder), tmpfs: tmpfs?(folder),
+                                                                                            override: bytes)) }
+        end
+      end
 
       # What +request+ finds installed over +lower+ (the lower layer's
       # folder): an Installed, nil when sbuild must resolve and install the
       # build-dependencies itself; +tool+ runs apt into +request+'s log.
+      # The layer is the build's until #release.
       def for(tool, request, lower)
         return nil unless request.repositories.all?(&:local?)
 
@@ -76,6 +124,21 @@ module Relspec
         end
       end
 
+      # Runs the block with #for's answer, released when the block ends.
+      def use(tool, request, lower)
+        installed = self.for(tool, request, lower)
+        yield installed
+      ensure
+        release(installed) if installed
+      end
+
+      # The build given +installed+ (#for) no longer runs over its layer.
+      def release(installed)
+        return unless installed.key
+
+        @lock.synchronize { @sets.fetch(installed.key)[:users] -= 1 }
+      end
+
       private
 
       # A build's Installed, nil when its set's layer could not be made. A
@@ -89,17 +152,86 @@ module Relspec
         say(log, "no build-dependency layer: none to install") if set.empty?
         complete = CONFLICTS.all? { |name| fields[name].to_s.strip.empty? }
         say(log, "all build-dependencies installed: sbuild's null resolver") if complete
-        Installed.new(folder: folder, complete: complete).freeze
+        Installed.new(folder: folder, complete: complete, key: folder && set.key).freeze
       end
 
-      # One lock per set: builds of other sets go on beside it.
+      # One lock per set: builds of other sets go on beside it. The layer
+      # is taken (counted in use) under the run's lock, where eviction
+      # happens, so no build is given a layer being removed.
       def layer(tool, request, lower, index, set)
-        slot = @lock.synchronize { @sets[set.key] ||= { lock: Mutex.new, dir: nil } }
+        slot = @lock.synchronize { @sets[set.key] ||= { lock: Mutex.new, dir: nil, users: 0, used: 0 } }
         slot[:lock].synchronize do
-          slot[:dir] ||= make(tool, request, lower, index, set) || :failed
-          note(request.log, slot[:dir] == :failed ? "could not be made, sbuild installs them" : "in #{slot[:dir]}", set)
-          slot[:dir] == :failed ? nil : slot[:dir]
+          dir = @lock.synchronize { take(slot) }
+          unless dir || slot[:dir] == :failed
+            return nil unless reserve(request.log, set, slot)
+
+            made = make(tool, request, lower, index, set)
+            # measured outside the lock (du reads the whole layer); only a budget needs it
+            bytes = made && @budget ? @measure.call(made) : 0
+            dir = @lock.synchronize { settle(slot, made, bytes) }
+          end
+          note(request.log, dir ? "in #{dir}" : "could not be made, sbuild installs them", set)
+          dir
         end
+      end
+
+      # +slot+'s folder, counted in use; nil when it has none (yet, or any more).
+      def take(slot)
+        return nil unless slot[:dir].is_a?(String)
+
+        slot[:users] += 1
+        slot[:used] = (@used += 1)
+        slot[:dir]
+      end
+
+      # Records +made+ (a layer's folder of +bytes+, nil when apt failed) in +slot+: taken.
+      def settle(slot, made, bytes)
+        slot[:making] = nil
+        unless made
+          slot[:dir] = :failed
+          return nil
+        end
+
+        slot[:dir] = made
+        slot[:bytes] = bytes
+        @estimate = bytes if bytes.positive?
+        take(slot)
+      end
+
+      # Room for +slot+'s new layer under the budget, made by giving up
+      # layers no build uses; false (and the log says why) when none can be.
+      def reserve(log, set, slot)
+        return true unless @budget
+
+        @lock.synchronize do
+          free, available = @room.call
+          decision = @budget.decide(kept, estimate: @estimate, free: free, available: available)
+          if decision.make
+            decision.evict.each { |key| evict(log, key) }
+            slot[:making] = @estimate
+          else
+            say(log, "no build-dependency layer #{set.key[0, 16]}: #{decision.reason}")
+          end
+          decision.make
+        end
+      end
+
+      # The layers kept or being made, for LayerBudget.
+      def kept
+        @sets.filter_map do |key, slot|
+          next unless slot[:dir].is_a?(String) || slot[:making]
+
+          LayerBudget::Layer.new(key: key, bytes: slot[:bytes] || slot[:making], used: slot[:used],
+                                 in_use: slot[:users].positive? || !slot[:making].nil?)
+        end
+      end
+
+      # Gives up +key+'s layer (no build uses it): a later build of its set makes it again.
+      def evict(log, key)
+        slot = @sets.fetch(key)
+        FileUtils.rm_rf(File.dirname(slot[:dir]))
+        say(log, "build-dependency layer #{key[0, 16]} (#{LayerBudget.human(slot[:bytes])}, unused) removed to make room")
+        slot[:dir] = slot[:bytes] = nil
       end
 
       def note(log, what, set)

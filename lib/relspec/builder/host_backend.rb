@@ -46,7 +46,9 @@ module Relspec
       # Nothing to prepare: the machine is the build environment.
       def prepare(_target, log: nil); end
 
-      # Nothing to clean up after a run either.
+      # Nothing to clean up after a target or a run either.
+      def finish_target(_target); end
+
       def finish; end
 
       def build(request)

@@ -34,15 +34,15 @@ module Relspec
 
       # The budget in bytes for layers on a file system of +size+ bytes
       # (nil when unknown), +tmpfs+ or not: a quarter of it, at most
-      # TMPFS_CAP on tmpfs; +override+ (RELSPEC_LAYER_BUDGET: bytes, or
-      # with K, M or G) wins.
+      # TMPFS_CAP on tmpfs; +override+ (bytes, RELSPEC_LAYER_BUDGET's: .parse) wins.
       def self.bytes(size, tmpfs:, override: nil)
-        return parse(override) if override
+        return override if override
 
         quarter = size ? size / 4 : TMPFS_CAP
         tmpfs ? [quarter, TMPFS_CAP].min : quarter
       end
 
+      # Bytes of +text+: a number, or one with K, M or G (binary units).
       def self.parse(text)
         match = text.to_s.strip.match(/\A(\d+)\s*([KMG]?)\z/i)
         raise InvalidOption, "#{VARIABLE}=#{text.to_s.inspect}: not a size (bytes, or a number with K, M or G)" unless match

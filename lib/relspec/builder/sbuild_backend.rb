@@ -43,11 +43,14 @@ module Relspec
       # submit host builds nothing here and may have no subordinate ids);
       # +dependency_layers+: builds on layers share a layer of their exact
       # build-dependency set (DependencyLayers; RELSPEC_DEPENDENCY_LAYERS=off
-      # for none, as a bench does to compare).
+      # for none, as a bench does to compare); +layer_bound+: the folder of
+      # a target's layers => DependencyLayers' options that bound them
+      # (DependencyLayers.bound: RELSPEC_LAYER_BUDGET read once, here).
       def initialize(tool, distributions, chroot_cache: nil, unpack_dir: UnpackDir.new,
                      ccache: Ccache.from_environment, apt_cache: AptCache.from_environment,
                      layer_ids: -> { SbuildBackend.layer_ids },
-                     dependency_layers: ENV["RELSPEC_DEPENDENCY_LAYERS"] != "off")
+                     dependency_layers: ENV["RELSPEC_DEPENDENCY_LAYERS"] != "off",
+                     layer_bound: DependencyLayers.bound(ENV.fetch(LayerBudget::VARIABLE, nil)))
         @tool = tool
         @distributions = distributions
         @chroot_cache = chroot_cache
@@ -56,6 +59,7 @@ module Relspec
         @apt_cache = apt_cache
         @layer_ids = layer_ids
         @dependency_layers = dependency_layers
+        @layer_bound = layer_bound
         @dependencies = {}
         @chroots = {}
         @layers = {}
@@ -80,6 +84,17 @@ module Relspec
       # Called once when the run ends: nothing of it stays on tmpfs.
       def finish
         @unpack_dir.close
+      end
+
+      # Called when the run has finished +target+'s builds: its layers (the
+      # lower one and the build-dependency layers) go, so that the next
+      # target starts with their room free.
+      def finish_target(target)
+        layers = @lock.synchronize do
+          @dependencies.delete(target.to_s)
+          @layers.delete(target.to_s)
+        end
+        FileUtils.rm_rf(layers.folder) if layers
       end
 
       # Makes the target's chroot tarball unless it exists; true if it did.
@@ -142,14 +157,25 @@ module Relspec
       # and over the layer of its build-dependencies when there is one.
       def run_layered(layers, request, work)
         lower = layers.lower(@tool, request.source, request.log)
-        installed = dependencies(request.target, layers)&.for(@tool, request, lower)
-        lower = "#{installed.folder}:#{lower}" if installed&.folder
-        complete = installed&.complete || false
-        layers.layer do |upper, overlay_work, merged|
-          sbuild = command(request, work, layers.empty_tarball, installed: complete)
-          run(request, work, layers.wrap(sbuild, lower, upper, overlay_work, merged), layers.config_lines(merged),
-              downloads: !complete)
+        with_dependencies(request, layers, lower) do |installed|
+          lowers = installed&.folder ? "#{installed.folder}:#{lower}" : lower
+          complete = installed&.complete || false
+          layers.layer do |upper, overlay_work, merged|
+            sbuild = command(request, work, layers.empty_tarball, installed: complete)
+            run(request, work, layers.wrap(sbuild, lowers, upper, overlay_work, merged), layers.config_lines(merged),
+                downloads: !complete)
+          end
         end
+      end
+
+      # Runs the block with what +request+ finds installed over +lower+
+      # (DependencyLayers::Installed, nil for nothing), its layer in use
+      # until the block ends.
+      def with_dependencies(request, layers, lower, &)
+        dependencies = dependencies(request.target, layers)
+        return yield nil unless dependencies
+
+        dependencies.use(@tool, request, lower, &)
       end
 
       # The target's ChrootLayers, nil when builds unpack the tarball.
@@ -172,7 +198,8 @@ module Relspec
             DependencyLayers.new(layers.folder, namespace: layers.namespace, arch: target.arch,
                                                 owner: [layers.uids.first, layers.gids.first],
                                                 archives: @apt_cache&.target_folder(target),
-                                                depends: @ccache ? [Ccache::PACKAGE] : [])
+                                                depends: @ccache ? [Ccache::PACKAGE] : [],
+                                                **@layer_bound.call(layers.folder))
         end
       end
 

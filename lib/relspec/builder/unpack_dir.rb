@@ -36,6 +36,22 @@ module Relspec
         nil
       end
 
+      # Bytes of the file system of +dir+, nil when unknown.
+      def self.size_bytes(dir)
+        output, status = Open3.capture2("df", "--output=size", "-B1", dir, err: File::NULL)
+        status.success? ? output.lines.last.to_i : nil
+      rescue SystemCallError
+        nil
+      end
+
+      # Bytes of memory available (+meminfo+: /proc/meminfo), nil when unknown.
+      def self.available_memory(meminfo)
+        kib = File.read(meminfo)[/^MemAvailable:\s+(\d+) kB/, 1]
+        kib && (kib.to_i * 1024)
+      rescue SystemCallError
+        nil
+      end
+
       # +shm+: the tmpfs folder; +meminfo+: /proc/meminfo; +needed+: bytes
       # of tmpfs and of available memory a build needs to unpack there;
       # +free_bytes+: how the tmpfs's free bytes are asked.
@@ -87,7 +103,7 @@ module Relspec
         return false unless File.directory?(@shm) && File.writable?(@shm)
 
         free = @free_bytes.call(@shm)
-        available = available_memory
+        available = UnpackDir.available_memory(@meminfo)
         !free.nil? && !available.nil? && free >= @needed && available >= @needed
       end
 
@@ -128,13 +144,6 @@ module Relspec
         # sbuild's namespace root reaches the chroot's layers through it
         FileUtils.mkdir(root, mode: 0o755)
         root
-      end
-
-      def available_memory
-        kib = File.read(@meminfo)[/^MemAvailable:\s+(\d+) kB/, 1]
-        kib && (kib.to_i * 1024)
-      rescue SystemCallError
-        nil
       end
     end
   end

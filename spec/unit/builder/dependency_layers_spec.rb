@@ -37,9 +37,17 @@ RSpec.describe Relspec::Builder::DependencyLayers do
     end
   end
 
-  def layers(depends: [])
+  def layers(depends: [], **bound)
     described_class.new(@dir, namespace: %w[unshare --user], archives: nil, arch: "amd64", owner: [Process.uid, Process.gid],
-                              depends: depends)
+                              depends: depends, **bound)
+  end
+
+  gib = 1024**3
+
+  # Layers bounded to +budget+ GB, each measured 1 GB, with +room+ ([free, available]).
+  def bounded(budget, room: [nil, nil])
+    layers(budget: Relspec::Builder::LayerBudget.new(budget: budget * (1024**3)), room: -> { room },
+           measure: ->(_dir) { 1024**3 })
   end
 
   def request(source, repositories: [], more: "")
@@ -133,5 +141,52 @@ RSpec.describe Relspec::Builder::DependencyLayers do
     expect(failing.installs.size).to eq(1)
     expect(File.read(File.join(@dir, "b.log"))).to include("could not be made, sbuild installs them")
     expect(Dir.children(@dir).grep(/\Adeps-/)).to be_empty
+  end
+
+  it "gives up the least recently used layer no build uses to stay within the budget, never one in use" do
+    apt = tool.new({ "a" => cmake, "b" => base, "c" => cmake + base, "d" => cmake, "e" => base })
+    dependency_layers = bounded(2)
+    first = dependency_layers.for(apt, request("a"), "/run/lower")
+    second = dependency_layers.for(apt, request("b"), "/run/lower")
+    dependency_layers.release(first)
+    # a's layer is unused and the older: it goes, b's (in use) stays
+    third = dependency_layers.for(apt, request("c"), "/run/lower")
+    expect(third.folder).to be_a(String)
+    expect(File.directory?(first.folder)).to be(false)
+    expect(File.directory?(second.folder)).to be(true)
+    expect(File.read(File.join(@dir, "c.log"))).to match(/^relspec: build-dependency layer \h{16} \(1.0 GB, unused\) removed to make room\n/)
+    # both in use: no room for a's set again, and nothing is removed
+    fourth = dependency_layers.for(apt, request("d"), "/run/lower")
+    expect(fourth).to be_nil
+    expect(File.read(File.join(@dir, "d.log"))).to match(
+      /^relspec: no build-dependency layer \h{16}: no room \(the layers in use take 2.0 GB, a new one about 1.0 GB, of a budget of 2.0 GB; /
+    )
+    expect([second.folder, third.folder]).to all(satisfy { |dir| File.directory?(dir) })
+    # once b's build ends its layer may go; a's set is made again
+    dependency_layers.release(second)
+    expect(dependency_layers.for(apt, request("d"), "/run/lower").folder).to eq(first.folder)
+    expect(File.directory?(second.folder)).to be(false)
+    expect(apt.installs.size).to eq(4)
+  end
+
+  it "keeps a floor free on the layers' file system and in memory" do
+    apt = tool.new({ "a" => cmake })
+    expect(bounded(8, room: [20 * gib, (6 * gib) + 1]).for(apt, request("a"), "/run/lower")).to be_nil
+    expect(File.read(File.join(@dir, "a.log"))).to include("6.0 GB of memory available; 6.0 GB must stay free)")
+    expect(bounded(8, room: [20 * gib, 8 * gib]).for(apt, request("a"), "/run/lower").folder).to be_a(String)
+  end
+
+  it "counts a layer in use while #use's block runs, also when it raises" do
+    apt = tool.new({ "a" => cmake, "b" => base })
+    dependency_layers = bounded(1)
+    expect do
+      dependency_layers.use(apt, request("a"), "/run/lower") do |installed|
+        expect(installed.folder).to be_a(String)
+        # in use: b's set finds no room
+        expect(dependency_layers.for(apt, request("b"), "/run/lower")).to be_nil
+        raise Relspec::BuildError, "sbuild failed"
+      end
+    end.to raise_error(Relspec::BuildError)
+    expect(dependency_layers.for(apt, request("b"), "/run/lower").folder).to be_a(String)
   end
 end

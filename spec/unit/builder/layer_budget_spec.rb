@@ -61,9 +61,10 @@ RSpec.describe Relspec::Builder::LayerBudget do
     expect(described_class.bytes(100 * gib, tmpfs: true)).to eq(8 * gib)
     expect(described_class.bytes(12 * gib, tmpfs: true)).to eq(3 * gib)
     expect(described_class.bytes(nil, tmpfs: true)).to eq(8 * gib)
-    expect(described_class.bytes(100 * gib, tmpfs: true, override: "1")).to eq(1)
-    expect(described_class.bytes(100 * gib, tmpfs: true, override: "20G")).to eq(20 * gib)
-    expect(described_class.bytes(100 * gib, tmpfs: true, override: "512m")).to eq(512 * (1024**2))
+    expect(described_class.bytes(100 * gib, tmpfs: true, override: 1)).to eq(1)
+    expect(described_class.parse("20G")).to eq(20 * gib)
+    expect(described_class.parse("512m")).to eq(512 * (1024**2))
+    expect(described_class.parse(" 1000 ")).to eq(1000)
   end
 
   it "refuses an override that is no size, saying which setting" do

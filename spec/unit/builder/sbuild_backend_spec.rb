@@ -162,8 +162,10 @@ RSpec.describe Relspec::Builder::SbuildBackend do
       cmake = "Inst cmake (3.25.1-1 Debian:12.11/stable [amd64])\n"
       tool = resolver.new({ "empty" => "", "cmake" => cmake, "conflicts" => cmake })
       ccache = Relspec::Builder::Ccache.new(File.join(dir, "ccache"), owner: [Process.uid, Process.gid])
+      # bounded as on a file system with room (df and du are not run here)
+      bound = { budget: Relspec::Builder::LayerBudget.new(budget: 1024**3), room: -> { [nil, nil] }, measure: ->(_dir) { 1 } }
       backend = described_class.new(tool, {}, chroot_cache: cache, unpack_dir: unpack, ccache: ccache, apt_cache: apt_cache,
-                                              layer_ids: [[Process.uid, 1], [Process.gid, 1]])
+                                              layer_ids: [[Process.uid, 1], [Process.gid, 1]], layer_bound: ->(_folder) { bound })
       allow(Relspec::Builder::Chroot).to receive(:host_arch).and_return("amd64")
       sbuilds = %w[empty cmake conflicts].map do |source|
         dsc = File.join(dir, "#{source}.dsc")
@@ -194,6 +196,12 @@ RSpec.describe Relspec::Builder::SbuildBackend do
       expect(conflicts).to include("--extra-package=#{deb}")
       expect(conflicts[9]).to eq(on_layer[9])
       expect(unpack.extras[2]).to end_with(*ccache.config_lines, *apt_cache.config_lines(Relspec::Target.new("bookworm", "amd64")))
+
+      # the target's builds have ended: its layers go (the lower one and
+      # the build-dependency layer), another target's stay
+      File.write(File.join(dir, "run", "trixie-amd64"), "")
+      backend.finish_target(Relspec::Target.new("bookworm", "amd64"))
+      expect(Dir.children(File.join(dir, "run"))).to eq(["trixie-amd64"])
     end
   end
 
