@@ -519,4 +519,18 @@ RSpec.describe "relspec build and publish under concurrency and faults", order: 
     FileUtils.rm_rf(outside)
     FileUtils.rm_rf(foreign) if foreign
   end
+
+  # Issue 48: the budget of the kept build-dependency layers is a size;
+  # anything else stops the run before the backend builds anything.
+  it "case 7: refuses a RELSPEC_LAYER_BUDGET that is no size, before any build" do
+    results = File.join(@release.target_dir, "build-results.yml")
+    before = File.exist?(results) ? File.read(results) : nil
+    ["", "lots", "1.5G", "-1"].each do |value|
+      run = relspec("build", spec, "--out", "out", "--backend", "sbuild", "--rebuild", chdir: @dir,
+                                                                                       env: { "RELSPEC_LAYER_BUDGET" => value })
+      expect([run.exit_code, run.stdout]).to eq([1, ""])
+      expect(run.stderr).to eq("relspec: error: RELSPEC_LAYER_BUDGET=#{value.inspect}: not a size (bytes, or a number with K, M or G)\n")
+    end
+    expect(File.exist?(results) ? File.read(results) : nil).to eq(before)
+  end
 end

@@ -173,6 +173,29 @@ RSpec.describe "relspec build --backend sbuild", order: :defined do
   # chroot (dpkg-checkbuilddeps; sbuild passes no -d). DependencyLayers is
   # stubbed to claim base/three's set installed while the chroot has no
   # cmake: a wrong answer that relspec's own resolution cannot give.
+  # The kept build-dependency layers are bounded (docs/build.md, "A bound
+  # on the kept layers"): with a budget no layer fits in, every build
+  # goes without one, resolved and installed by sbuild's apt as with
+  # RELSPEC_DEPENDENCY_LAYERS=off, and still builds.
+  it "builds everything without build-dependency layers when the budget leaves no room for one" do
+    skip "the chroot's layers need root" unless Process.uid.zero?
+
+    run = relspec("build", "specs/sb.yml", "--out", "out", "--backend", "sbuild", "--rebuild", "--jobs", "2",
+                  chdir: @dir, env: { "RELSPEC_LAYER_BUDGET" => "1" })
+    expect(run.exit_code).to eq(0), run.stdout + run.stderr
+    results = YAML.safe_load(File.read(File.join(@release.target_dir, "build-results.yml")))
+    expect(results.fetch("packages").values.map { |record| record["status"] }).to eq(%w[built built built built])
+    logs = %w[base/one base/two base/three base/four].map do |package|
+      File.read(File.join(@release.target_dir, "logs", "#{@release.source(package)}.log"))
+    end
+    logs.each do |log|
+      expect(log).to match(/^relspec: no build-dependency layer \h{16}: no room \(the layers in use take 0\.0 GB, .* of a budget of 0\.0 GB/)
+      expect(log).not_to match(/^relspec: build-dependency layer \h{16} .* in /)
+      expect(log).not_to include("--build-dep-resolver=null")
+      expect(log).to match(/^Unpacking cmake /)
+    end
+  end
+
   it "fails a build whose Build-Depends are missing under sbuild's null resolver (dpkg-buildpackage checks them)" do
     skip "the chroot's layers need root" unless Process.uid.zero?
 
