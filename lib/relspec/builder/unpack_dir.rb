@@ -30,15 +30,17 @@ module Relspec
       # Bytes free in the file system of +dir+ (df; Ruby has no statvfs),
       # nil when unknown.
       def self.free_bytes(dir)
-        output, status = Open3.capture2("df", "--output=avail", "-B1", dir, err: File::NULL)
-        status.success? ? output.lines.last.to_i : nil
-      rescue SystemCallError
-        nil
+        df(dir, "avail")
       end
 
       # Bytes of the file system of +dir+, nil when unknown.
       def self.size_bytes(dir)
-        output, status = Open3.capture2("df", "--output=size", "-B1", dir, err: File::NULL)
+        df(dir, "size")
+      end
+
+      # df's +field+ of the file system of +dir+ in bytes, nil when unknown.
+      def self.df(dir, field)
+        output, status = Open3.capture2("df", "--output=#{field}", "-B1", dir, err: File::NULL)
         status.success? ? output.lines.last.to_i : nil
       rescue SystemCallError
         nil
