@@ -126,16 +126,26 @@ module Relspec
       [plan.with_targets(targets, warnings: raised_warnings(raised, facts.resolution.spec_file)), work]
     end
 
-    # One warning per archive import whose version was raised (RisingUpstream),
+    # One warning per package whose version was raised (RisingUpstream),
     # listing the targets.
     def self.raised_warnings(raised, spec_file)
-      raised.group_by { |one| [one.package, one.archive, one.above, one.upstream] }.sort.map do |(package, archive, above, upstream), all|
+      raised.group_by { |one| [one.package, one.given, one.above, one.upstream, one.import] }.sort_by { |key, _| key.first(4) }
+            .map do |(package, given, above, upstream, import), all|
         targets = all.map { |one| one.target.to_s }.uniq.sort.join(", ")
-        Diagnostic.warning("archive-time-back",
-                           "#{package}: its archive's time gives #{archive}, below #{above}, which the release already " \
-                           "gave it (#{targets}); versioned #{upstream}, so that apt takes it as an upgrade",
-                           location: spec_file.location(["workspace"]),
-                           hint: "an older archive is served again: check the package set's url, or leave it so")
+        upgrade = "versioned #{upstream}, so that apt takes it as an upgrade"
+        if import
+          Diagnostic.warning("archive-time-back",
+                             "#{package}: its archive's time gives #{given}, below #{above}, which the release already " \
+                             "gave it (#{targets}); #{upgrade}",
+                             location: spec_file.location(["workspace"]),
+                             hint: "an older archive is served again: check the package set's url, or leave it so")
+        else
+          Diagnostic.warning("version-back",
+                             "#{package}: its version #{given} is below #{above}, which the release already gave it " \
+                             "(#{targets}); #{upgrade} (reprepro and apt never take a lower one)",
+                             location: spec_file.location(["workspace"]),
+                             hint: "a pin or a commit moved back on purpose: leave it so")
+        end
       end
     end
 

@@ -17,6 +17,7 @@ require_relative "publish/stale_reprepro_lock"
 require_relative "publish/transaction"
 require_relative "publish/live_lock"
 require_relative "publish/upload"
+require_relative "publish/inclusion_check"
 require_relative "publish/pool_guard"
 require_relative "reprepro/runner"
 require_relative "publish/signing_key"
@@ -204,6 +205,7 @@ module Relspec
         # before its .debs were gets them now.
         debs = uploads[target].flat_map(&:debs)
         reprepro.includedeb(target.codename, debs) unless debs.empty?
+        InclusionCheck.new(target, reprepro.packages(target.codename)).check(uploads[target])
         TargetResult.new(target: target, results_path: read&.path, published: fresh.map(&:source), held: held.map(&:source),
                          left_out: read ? read.entries.reject { |record| record.built? || record.kept? } : [],
                          built: !read.nil?)

@@ -83,14 +83,16 @@ end
 # target (bookworm/amd64 and trixie/amd64 by default): the whole layout
 # (`rock.core`), the gems at the versions the toolchain needs (facets 4
 # dropped what utilrb requires; rice 3 is what base/types' Ruby bindings
-# build with), the project's overlays, and leave_out with a reason, for the
+# build with; grape 3.1.1 declares Ruby >= 3.1 but its dsl/routing.rb
+# forwards an anonymous block beside **options, which bookworm's Ruby 3.1.2
+# cannot parse, and 3.0.1 parses), the project's overlays, and leave_out with a reason, for the
 # targets it concerns, for what a distribution cannot have. The rest of the
 # gems the package sets ask for come from RubyGems (gem_source's default).
 # bookworm's archive is this machine's own (its apt lists); any other
 # codename's is Debian's, verified with the debian-archive-keyring.
 class RockCoreRelease
   ROOT = File.expand_path("../..", __dir__)
-  GEMS = { "facets" => "3.1.0", "rice" => "3.0.0", "rake-compiler" => "0.8.3" }.freeze
+  GEMS = { "facets" => "3.1.0", "rice" => "3.0.0", "rake-compiler" => "0.8.3", "grape" => "3.0.1" }.freeze
   TARGETS = %w[bookworm/amd64 trixie/amd64].freeze
   HOST_CODENAME = "bookworm"
   DEBIAN = "http://deb.debian.org/debian"

@@ -22,13 +22,15 @@ module Relspec
       end
 
       # The upstream part of a Debian version, without a repack suffix
-      # (1.2.0+dfsg-1 → 1.2.0).
+      # (1.2.0+dfsg-1 → 1.2.0), and of a version gone back the Debian way
+      # the one really packaged (3.1.1+really3.0.1-1 → 3.0.1).
       def debian_upstream(deb_version)
-        Apt::Version.parse(deb_version).upstream.sub(REPACK, "")
+        Apt::Version.parse(deb_version).upstream.sub(/\A.*\+really/, "").sub(REPACK, "")
       end
 
       # The gem version a distribution's ruby-* package version packages
-      # (1.2.0+dfsg-1 → 1.2.0, 1.0.0~pre-1 → 1.0.0.pre), or nil.
+      # (1.2.0+dfsg-1 → 1.2.0, 1.0.0~pre-1 → 1.0.0.pre, 3.1.1+really3.0.1-1
+      # → 3.0.1), or nil.
       def from_debian(deb_version)
         text = debian_upstream(deb_version).tr("~", ".")
         Gem::Version.correct?(text) ? Gem::Version.new(text) : nil

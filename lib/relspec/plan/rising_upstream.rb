@@ -5,19 +5,21 @@ require_relative "../debian/package_version"
 
 module Relspec
   module Plan
-    # An archive import's upstream version is made of the archive's time of
-    # modification, which can move back (an older archive served again, a
-    # server's clock): 0.20990101.000000 then 0.20210101.000000. apt never
-    # takes a lower version for an upgrade, so such a version is raised
-    # above the highest one the release gave the package on the target
-    # (its history, and the release's repository, the second witness) the
-    # way Debian goes back, "<highest>+really<archive's>", and said
-    # (Plan.settle's warning). Only archive imports: a git package moved to
-    # an older commit is a pin the user chose, and keeps its version.
+    # A package's upstream version can move back: an archive import's time
+    # of modification (an older archive served again, a server's clock:
+    # 0.20990101.000000 then 0.20210101.000000), a gem pinned to an older
+    # release (grape 3.1.1 then 3.0.1), a git package moved to an older
+    # commit. apt never takes a lower version for an upgrade, and reprepro
+    # never replaces a package by a lower one (it skips it and exits 0), so
+    # such a version is raised above the highest one the release gave the
+    # package on the target (its history, and the release's repository, the
+    # second witness) the way Debian goes back, "<highest>+really<given>",
+    # and said (Plan.settle's warning).
     class RisingUpstream
-      # +upstream+: the version given; +archive+: the one the archive's
-      # time makes; +above+: the highest the release gave before.
-      Raised = Struct.new(:package, :target, :archive, :above, :upstream, keyword_init: true)
+      # +upstream+: the version used; +given+: the one the source makes
+      # (+import+: an archive import's time); +above+: the highest the
+      # release gave before.
+      Raised = Struct.new(:package, :target, :given, :above, :upstream, :import, keyword_init: true)
 
       # +history+: History; +own+: OwnRepository.
       def initialize(history:, own:)
@@ -26,15 +28,16 @@ module Relspec
       end
 
       # [upstream version, Raised or nil] of +package+ (Debian name
-      # +deb_name+) on +target+ whose archive's time makes +upstream+.
-      def call(target:, package:, deb_name:, upstream:)
+      # +deb_name+) on +target+ whose source makes +upstream+ (+import+:
+      # an archive import's time).
+      def call(target:, package:, deb_name:, upstream:, import: false)
         above = highest(target, package, deb_name)
         return [upstream, nil] if above.nil? || Apt::Version.parse(upstream) >= Apt::Version.parse(above)
 
-        # raised for this archive by an earlier plan already: the same version again
+        # raised for this version by an earlier plan already: the same version again
         version = above.end_with?("+really#{upstream}") ? above : "#{above}+really#{upstream}"
-        [version, Raised.new(package: package, target: target, archive: upstream, upstream: version,
-                             above: version.delete_suffix("+really#{upstream}")).freeze]
+        [version, Raised.new(package: package, target: target, given: upstream, upstream: version,
+                             above: version.delete_suffix("+really#{upstream}"), import: import).freeze]
       end
 
       private

@@ -25,8 +25,8 @@ module Relspec
       # Debian::Overlay of a package on a target (+overlays.call(name,
       # target)+: its codename's and architecture's layers), read from
       # overlays/ by Plan.read.
-      # +rising+: RisingUpstream, which keeps an archive import's version
-      # from going back (nil: versions as the archives' times make them).
+      # +rising+: RisingUpstream, which keeps a version from going back
+      # (nil: versions as the sources make them).
       def initialize(catalog:, inputs:, versioning:, overlays:, rising: nil)
         @catalog = catalog
         @inputs = inputs
@@ -68,9 +68,10 @@ module Relspec
 
       def upstream_of(target, decision, package)
         upstream = Debian::PackageVersion.of_package(package)
-        return upstream unless @rising && package.vcs.sha256 # an archive import
+        return upstream unless @rising
 
-        upstream, raised = @rising.call(target: target, package: package.name, deb_name: decision.deb_name, upstream: upstream)
+        upstream, raised = @rising.call(target: target, package: package.name, deb_name: decision.deb_name, upstream: upstream,
+                                        import: !package.vcs.sha256.nil?)
         @raised << raised if raised
         upstream
       end

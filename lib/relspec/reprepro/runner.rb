@@ -44,6 +44,13 @@ module Relspec
           .lines.map(&:chomp)
       end
 
+      # Every package +codename+ lists, as [name, version, part] ("source"
+      # for a source package, else the architecture it is listed under).
+      def packages(codename)
+        run("list", codename, options: ["--list-format", "${package} ${version} ${$architecture}\n"])
+          .lines.map(&:split).select { |fields| fields.size == 3 }
+      end
+
       def export
         run("export")
       end

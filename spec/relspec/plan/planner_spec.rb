@@ -128,6 +128,29 @@ RSpec.describe "relspec plan" do
                                                                                 unavailable: 0)
   end
 
+  # Issue 44's grape pin: reprepro skips a version lower than the one it
+  # holds (and exits 0), apt never upgrades to it; a git package moved to an
+  # older commit is raised above the published one, as an archive's time is.
+  it "keeps a package's version above a newer one its repository holds (a commit moved back), and warns" do
+    yaml = <<~YAML
+      parent: root
+      blacklist: [{ match: data/models, reason: local patches }]
+      repository: { path: ../repos/ahead, trusted: true }
+    YAML
+    @fixture.repository("ahead", [%w[bionic amd64]], { "data/models" => { commit_time: "2099-01-01T00:00:00Z" } })
+    held = @fixture.version("data/models", "bionic", commit_time: "2099-01-01T00:00:00Z")
+    ahead = plan("ahead", yaml)
+    given = Relspec::Debian::PackageVersion.of_package(@fixture.catalog.package("data/models"))
+    above = Relspec::Debian::PackageVersion.parse(held).upstream
+    expect(ahead.targets.fetch(Relspec::Plan::Target.parse("bionic/amd64")).fetch("data/models").version.to_s)
+      .to eq("#{above}+really#{given}-1~bionic")
+    expect(ahead.targets.fetch(Relspec::Plan::Target.parse("buster/amd64")).fetch("data/models").version.to_s)
+      .to eq("#{given}-1~buster")
+    expect(ahead.warnings.map(&:to_s).join("\n"))
+      .to include("warning[version-back]: data/models: its version #{given} is below #{above}, which the release already " \
+                  "gave it (bionic/amd64); versioned #{above}+really#{given}, so that apt takes it as an upgrade")
+  end
+
   it "leaves out what a target cannot have, and says why in the lock, the reports and `why`" do
     target = Relspec::Plan::Target.parse("buster/amd64")
     expect(leaf.targets.fetch(target)).not_to have_key("tools/legacy")

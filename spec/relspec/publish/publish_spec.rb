@@ -282,6 +282,35 @@ RSpec.describe "relspec publish" do
     File.binwrite(deb, original) if original
   end
 
+  it "refuses a version lower than the one the repository holds, which reprepro skips saying nothing, and publishes nothing" do
+    # the repository holds base/logging's .deb at a higher revision: the built one repacked by dpkg-deb
+    deb = Dir.glob(File.join(@target_dir, "results", logging, "*.deb")).first
+    FileUtils.mkdir_p(File.join(repository, "conf"))
+    Relspec::Reprepro::Config.new(label: "solo", description: "solo for %<codename>s", targets: [Relspec::Target.parse(target_name)],
+                                  source: true).write(File.join(repository, "conf"))
+    higher = Dir.mktmpdir do |tmp|
+      system("dpkg-deb", "-R", deb, File.join(tmp, "x"), exception: true)
+      control = File.join(tmp, "x", "DEBIAN", "control")
+      version = File.read(control)[/^Version: (\S+)$/, 1]
+      raised = version.sub(/-(\d+)~/) { "-#{Regexp.last_match(1).to_i + 5}~" }
+      File.write(control, File.read(control).sub("Version: #{version}\n", "Version: #{raised}\n"))
+      system("dpkg-deb", "-b", File.join(tmp, "x"), File.join(tmp, "higher.deb"), out: File::NULL, exception: true)
+      system("reprepro", "-b", repository, "includedeb", "bookworm", File.join(tmp, "higher.deb"), out: File::NULL, exception: true)
+      raised
+    end
+    listing = -> { Open3.capture2("reprepro", "-b", repository, "list", "bookworm").first }
+    before = listing.call
+
+    run = publish
+    expect(run.exit_code).to eq(1)
+    expect(run.stderr).to include("bookworm/amd64: reprepro did not take 1 file(s) of #{logging}, though it exited 0; " \
+                                  "nothing was published", "#{File.basename(deb)}: it keeps #{logging} #{higher}\n",
+                                  "reprepro never replaces a package by a lower version")
+    expect(run.stderr).not_to include(".rb:")
+    expect(listing.call).to eq(before)
+    expect(before).to eq("bookworm|main|amd64: #{logging} #{higher}\n")
+  end
+
   it "names the spec line when the release has no repository path" do
     @fixture.spec("bare", "targets: { bookworm: [amd64] }\nrepository: { url: https://example.org/bare, trusted: true }\n")
     run = relspec("publish", "specs/bare.yml", chdir: @dir)

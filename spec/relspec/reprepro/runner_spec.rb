@@ -31,6 +31,7 @@ RSpec.describe Relspec::Reprepro::Runner do
     runner.includedeb("bookworm", [@deb], arch: "amd64")
     expect(packages).to eq(["rock-x"])
     expect(runner.pool_files).to eq(["pool/main/r/rock-x/rock-x_1.0-1_amd64.deb"])
+    expect(runner.packages("bookworm")).to eq([%w[rock-x 1.0-1 amd64]])
     runner.remove("bookworm", ["rock-x"], arch: "amd64")
     runner.export
     runner.clearvanished

@@ -17,6 +17,9 @@ RSpec.describe Relspec::Debian::GemVersion do
     expect(described_class.from_debian("1:4.0.0~ds-2")).to eq(Gem::Version.new("4.0.0"))
     expect(described_class.from_debian("1.0.0~pre-1")).to eq(Gem::Version.new("1.0.0.pre"))
     expect(described_class.from_debian("0.9.1-3ubuntu1")).to eq(Gem::Version.new("0.9.1"))
+    # gone back the Debian way (a pin to an older gem, relspec's RisingUpstream): the one packaged
+    expect(described_class.from_debian("3.1.1+really3.0.1-1~bookworm")).to eq(Gem::Version.new("3.0.1"))
+    expect(described_class.from_debian("2.0+really1.9+dfsg-2")).to eq(Gem::Version.new("1.9"))
   end
 
   it "is nil for a Debian upstream that is no gem version" do

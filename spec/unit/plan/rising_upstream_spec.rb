@@ -6,8 +6,9 @@ require "relspec/plan/history"
 require "relspec/plan/inventory"
 require "relspec/plan/target"
 
-# An archive import's version kept rising when the archive's time moves
-# back (issue 46, case 13), fed the history and the repository as values.
+# A version kept rising when it moves back: an archive import's time (issue
+# 46, case 13), a gem pinned lower or an older commit (issue 44's grape),
+# fed the history and the repository as values.
 RSpec.describe Relspec::Plan::RisingUpstream do
   let(:target) { Relspec::Plan::Target.new("bookworm", "amd64").freeze }
   let(:index_entry) { Struct.new(:version) }
@@ -35,8 +36,11 @@ RSpec.describe Relspec::Plan::RisingUpstream do
   it "raises a version below the highest the history records above it, Debian's +really way, and says so" do
     version, raised = rise("0.20210101.000000", history: history("0.20210101.000000", "0.20990101.000000"))
     expect(version).to eq("0.20990101.000000+really0.20210101.000000")
-    expect(raised.to_h).to eq(package: "ext/a", target: target, archive: "0.20210101.000000", above: "0.20990101.000000",
-                              upstream: version)
+    expect(raised.to_h).to eq(package: "ext/a", target: target, given: "0.20210101.000000", above: "0.20990101.000000",
+                              upstream: version, import: false)
+    expect(described_class.new(history: history("0.20990101.000000"), own: own)
+                          .call(target: target, package: "ext/a", deb_name: "rock-r-ext-a", upstream: "0.20210101.000000", import: true)
+                          .last.import).to be(true)
   end
 
   it "gives the same raised version again to the same archive, and raises again past a raised one" do

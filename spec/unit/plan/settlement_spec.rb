@@ -185,7 +185,7 @@ RSpec.describe Relspec::Plan::Settlement do
   context "with an archive import whose time moved back (issue 46, case 13)" do
     let(:archives) { ["base/logging"] }
 
-    it "raises its version above the one the history records, hands the raise on, and leaves git packages alone" do
+    it "raises its version above the one the history records, hands the raise on, and raises a git package's as well" do
       later = "1.0.20990101.000000"
       history = Relspec::Plan::History.empty
                                       .with(target, "base/logging", Relspec::Debian::PackageVersion.new(later, 2, "bookworm"), "d")
@@ -194,9 +194,12 @@ RSpec.describe Relspec::Plan::Settlement do
       expect(targets.fetch(target).fetch("base/logging").version.to_s).to eq("#{later}+really#{upstream}-1~bookworm")
       expect(work.fetch(target).fetch("base/types").input.dependencies.map(&:version))
         .to eq(["#{later}+really#{upstream}-1~bookworm"])
-      expect(targets.fetch(target).fetch("base/types").version.to_s).to eq("#{upstream}-1~bookworm")
-      expect(raised.map(&:to_h)).to eq([{ package: "base/logging", target: target, archive: upstream, above: later,
-                                          upstream: "#{later}+really#{upstream}" }])
+      # a git package moved to an older commit: reprepro would skip its lower version
+      expect(targets.fetch(target).fetch("base/types").version.to_s).to eq("#{later}+really#{upstream}-1~bookworm")
+      expect(raised.map(&:to_h)).to eq([{ package: "base/logging", target: target, given: upstream, above: later,
+                                          upstream: "#{later}+really#{upstream}", import: true },
+                                        { package: "base/types", target: target, given: upstream, above: later,
+                                          upstream: "#{later}+really#{upstream}", import: false }])
     end
   end
 end
