@@ -146,7 +146,7 @@ RSpec.describe "relspec plan" do
       .to eq("#{above}+really#{given}-1~bionic")
     expect(ahead.targets.fetch(Relspec::Plan::Target.parse("buster/amd64")).fetch("data/models").version.to_s)
       .to eq("#{given}-1~buster")
-    expect(ahead.warnings.map(&:to_s).join("\n"))
+    expect(ahead.warnings.join("\n"))
       .to include("warning[version-back]: data/models: its version #{given} is below #{above}, which the release already " \
                   "gave it (bionic/amd64); versioned #{above}+really#{given}, so that apt takes it as an upgrade")
   end
