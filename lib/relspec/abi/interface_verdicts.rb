@@ -117,15 +117,29 @@ module Relspec
       # headers of a dependency's dependency.
       def cutoff_of(entry)
         closure = closure(entry.source)
-        changed = closure.find { |source| !unchanged?(source) }
-        reason = if changed
-                   verdict = interface(changed)
-                   verdict ? "the interface of #{changed} changed" : "#{changed} has no verdict to go by"
-                 else
-                   "the interface of #{entry.cutoff.because.join(', ')} did not change"
-                 end
+        changed = closure.lazy.filter_map { |source| rebuild_reason(entry, source) }.first
+        reason = changed || "the interface of #{entry.cutoff.because.join(', ')} did not change"
         Builder::BuildResults::Cutoff.new(keeps: entry.cutoff.keeps, verdict: changed ? "rebuild" : "keep", reason: reason,
                                           evidence: changed ? [].freeze : evidence(closure)).freeze
+      end
+
+      # Why +source+ of +entry+'s closure makes it rebuilt, or nil. A
+      # verdict counts only against the build the repository holds, which
+      # the kept build was made against (+against+ of the plan; unknown in
+      # plans written before it): a build made and not published since is
+      # no baseline.
+      def rebuild_reason(entry, source)
+        return nil if kept_at(source)
+
+        verdict = interface(source)
+        return "#{source} has no verdict to go by" unless verdict
+
+        held = (entry.cutoff.against || {})[source]
+        if held && verdict.against.to_s != held
+          return "#{source}'s new build was compared with #{verdict.against}, not with #{held} " \
+                 "that the repository holds and the kept build was made against"
+        end
+        verdict.unchanged? ? nil : "the interface of #{source} changed"
       end
 
       # One line per package of a kept candidate's closure: what its
@@ -155,10 +169,6 @@ module Relspec
       def side(version, paths, root)
         FileUtils.mkdir_p(root)
         InterfaceCheck::Side.of(version, paths, root: root)
-      end
-
-      def unchanged?(source)
-        !kept_at(source).nil? || !!interface(source)&.unchanged?
       end
 
       # The version +source+ is kept at: by this run, or by an earlier one
