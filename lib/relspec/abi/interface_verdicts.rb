@@ -39,6 +39,8 @@ module Relspec
         @dir = replaced || dir
         @check = InterfaceCheck.new(compare: compare)
         @entries = entries.to_h { |entry| [entry.source, entry] }
+        # source => the version the repository holds, as the candidates name it
+        @held = entries.flat_map { |entry| (entry.cutoff&.against || {}).to_a }.to_h.freeze
         @verdicts = {}
         @cutoffs = {}
         @lock = Mutex.new
@@ -50,7 +52,7 @@ module Relspec
       # (#cutoff).
       def decide(entry, files)
         previous = @previous[entry.source]
-        interface = comparable?(previous, entry) ? interface_of(entry, previous, files) : nil
+        interface = comparable?(previous, entry) ? held(interface_of(entry, previous, files), entry.source) : nil
         cutoff = entry.cutoff && !cutoff(entry.source) ? undecided(entry) : nil # #keep decides it first
         @lock.synchronize do
           @verdicts[entry.source] = interface
@@ -191,6 +193,16 @@ module Relspec
 
         previous = @previous[source]
         previous&.version == @entries[source]&.version ? previous&.interface : nil
+      end
+
+      # +interface+ naming the version the repository holds of +source+
+      # when it was compared with another one: a build made and not
+      # published is said to be no baseline, not compared silently.
+      def held(interface, source)
+        held = @held[source]
+        return interface if held.nil? || held == interface.against
+
+        Builder::BuildResults::Interface.new(**interface.to_h.transform_keys(&:to_sym), held: held).freeze
       end
 
       def interface_of(entry, previous, files)

@@ -199,7 +199,9 @@ RSpec.describe "the early cutoff on a published release", order: :defined do
     expect(record("base/user")).to include("status" => "kept")
     change("cut.c", "#include \"cut.h\"\nint cut_value(void) { return 48; }\n")
     build = build_and_publish
-    expect(record("base/lib")["interface"]).to include("against" => unpublished, "verdict" => "unchanged")
+    # the verdict itself says its baseline is not the published build
+    expect(record("base/lib")["interface"]).to include("against" => unpublished, "verdict" => "unchanged", "held" => held)
+    expect(build.stdout).to include("interface unchanged from #{unpublished} (unpublished: the repository holds #{held})")
     reason = "#{lib}'s new build was compared with #{unpublished}, not with #{held} that the repository holds " \
              "and the kept build was made against"
     expect(record("base/user")).to include("status" => "built")

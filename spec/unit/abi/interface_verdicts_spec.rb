@@ -67,6 +67,23 @@ RSpec.describe Relspec::Abi::InterfaceVerdicts, :tmpdir do
     expect(verdicts["a"]).to be_nil
   end
 
+  # Issue 45: a.1-1 in the target folder was built and not published (the
+  # candidate m names 1-0 the repository holds): the verdict says so.
+  it "names the version the repository holds in a verdict against another build" do
+    candidate = lambda do |held|
+      plan_entry("m", "1-2", needs: ["a"], cutoff: Relspec::Builder::BuildPlan::Cutoff.new(keeps: "1-1", because: ["a"],
+                                                                                           against: { "a" => held }))
+    end
+    # no .deb (a unit test unpacks nothing): the comparison is of no files, what matters is against what
+    FileUtils.mkdir_p(File.join(@dir, "results/a"))
+    File.write(File.join(@dir, "results/a/a_1-1_amd64.buildinfo"), "1-1")
+    previous = { "a" => record("1-1", files: [results::Produced.of(@dir, "results/a/a_1-1_amd64.buildinfo")]) }
+    unpublished = described_class.new(previous, @dir, entries: [entry, candidate.call("1-0")]).decide(entry, [])
+    expect(unpublished.to_h).to include("against" => "1-1", "held" => "1-0")
+    expect(described_class.new(previous, @dir, entries: [entry, candidate.call("1-1")]).decide(entry, []).held).to be_nil
+    expect(described_class.new(previous, @dir, entries: [entry]).decide(entry, []).held).to be_nil
+  end
+
   # lib <- mid <- top: mid and top are candidates (only lib's new version
   # moved mid, only mid's moved top). lib was built at its planned version
   # by an earlier run, whose record holds its verdict.
