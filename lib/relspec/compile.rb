@@ -148,7 +148,8 @@ module Relspec
 
       Builder::BuildPlan::Cutoff.new(keeps: decision.cutoff.keeps.to_s,
                                      because: decision.cutoff.because.map { |name| built.fetch(name).deb_name },
-                                     debian_digest: decision.cutoff.debian_digest)
+                                     debian_digest: decision.cutoff.debian_digest,
+                                     against: decision.cutoff.against)
     end
 
     # <out>/<release>/<codename>-<arch>/plan.yml: the builds in dependency

@@ -152,6 +152,16 @@ RSpec.describe "relspec build and publish under concurrency and faults", order: 
     run = relspec("build", spec, "--out", "out", "--backend", "host", chdir: @dir)
     expect([run.exit_code, run.stderr]).to match([1, %r{\Aout/conc/bookworm-amd64/plan.yml:\d+:\d+: error\[build-plan\]: cannot read the build plan: builds\.0\.dsc "/etc/passwd" is not a plain path}])
     expect(File.read(results)).to eq(pristine)
+    # an early cutoff candidate whose kept build was made against no Debian version (issue 45)
+    against = "  build_depends: []\n  cutoff:\n    keeps: 1-1\n    because: []\n    against:\n      rock-x: 2 0\n"
+    File.write(plan, text.sub("  build_depends: []\n", against))
+    line = text.lines.index("  build_depends: []\n") + 6
+    run = relspec("build", spec, "--out", "out", "--backend", "host", chdir: @dir)
+    expect([run.exit_code, run.stdout]).to eq([1, ""]), run.stderr
+    expect(run.stderr).to start_with("out/conc/bookworm-amd64/plan.yml:#{line}:")
+      .and(include('error[build-plan]: cannot read the build plan: invalid Debian version "2 0"'))
+    expect(run.stderr).not_to include("from /")
+    expect(File.read(results)).to eq(pristine)
   ensure
     File.write(results, pristine)
     File.write(plan, text)

@@ -39,6 +39,8 @@ module Relspec
         @dir = replaced || dir
         @check = InterfaceCheck.new(compare: compare)
         @entries = entries.to_h { |entry| [entry.source, entry] }
+        # source => the version the repository holds, as the candidates name it
+        @held = entries.flat_map { |entry| (entry.cutoff&.against || {}).to_a }.to_h.freeze
         @verdicts = {}
         @cutoffs = {}
         @lock = Mutex.new
@@ -50,7 +52,7 @@ module Relspec
       # (#cutoff).
       def decide(entry, files)
         previous = @previous[entry.source]
-        interface = comparable?(previous, entry) ? interface_of(entry, previous, files) : nil
+        interface = comparable?(previous, entry) ? held(interface_of(entry, previous, files), entry.source) : nil
         cutoff = entry.cutoff && !cutoff(entry.source) ? undecided(entry) : nil # #keep decides it first
         @lock.synchronize do
           @verdicts[entry.source] = interface
@@ -117,15 +119,29 @@ module Relspec
       # headers of a dependency's dependency.
       def cutoff_of(entry)
         closure = closure(entry.source)
-        changed = closure.find { |source| !unchanged?(source) }
-        reason = if changed
-                   verdict = interface(changed)
-                   verdict ? "the interface of #{changed} changed" : "#{changed} has no verdict to go by"
-                 else
-                   "the interface of #{entry.cutoff.because.join(', ')} did not change"
-                 end
+        changed = closure.lazy.filter_map { |source| rebuild_reason(entry, source) }.first
+        reason = changed || "the interface of #{entry.cutoff.because.join(', ')} did not change"
         Builder::BuildResults::Cutoff.new(keeps: entry.cutoff.keeps, verdict: changed ? "rebuild" : "keep", reason: reason,
                                           evidence: changed ? [].freeze : evidence(closure)).freeze
+      end
+
+      # Why +source+ of +entry+'s closure makes it rebuilt, or nil. A
+      # verdict counts only against the build the repository holds, which
+      # the kept build was made against (+against+ of the plan; unknown in
+      # plans written before it): a build made and not published since is
+      # no baseline.
+      def rebuild_reason(entry, source)
+        return nil if kept_at(source)
+
+        verdict = interface(source)
+        return "#{source} has no verdict to go by" unless verdict
+
+        held = (entry.cutoff.against || {})[source]
+        if held && verdict.against.to_s != held
+          return "#{source}'s new build was compared with #{verdict.against}, not with #{held} " \
+                 "that the repository holds and the kept build was made against"
+        end
+        verdict.unchanged? ? nil : "the interface of #{source} changed"
       end
 
       # One line per package of a kept candidate's closure: what its
@@ -157,10 +173,6 @@ module Relspec
         InterfaceCheck::Side.of(version, paths, root: root)
       end
 
-      def unchanged?(source)
-        !kept_at(source).nil? || !!interface(source)&.unchanged?
-      end
-
       # The version +source+ is kept at: by this run, or by an earlier one
       # at its planned version when this run neither decides nor builds it
       # (the run reuses that keep), else nil.
@@ -181,6 +193,16 @@ module Relspec
 
         previous = @previous[source]
         previous&.version == @entries[source]&.version ? previous&.interface : nil
+      end
+
+      # +interface+ naming the version the repository holds of +source+
+      # when it was compared with another one: a build made and not
+      # published is said to be no baseline, not compared silently.
+      def held(interface, source)
+        held = @held[source]
+        return interface if held.nil? || held == interface.against
+
+        Builder::BuildResults::Interface.new(**interface.to_h.transform_keys(&:to_sym), held: held).freeze
       end
 
       def interface_of(entry, previous, files)

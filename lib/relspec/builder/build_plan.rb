@@ -24,7 +24,7 @@ module Relspec
       FILE = OutputTree::PLAN_FILE
       ROOT_KEYS = %w[release target builds].freeze
       BUILD_KEYS = %w[package source version dsc build_depends cutoff].freeze
-      CUTOFF_KEYS = %w[keeps because debian_digest].freeze
+      CUTOFF_KEYS = %w[keeps because debian_digest against].freeze
       HINT = "plan.yml is written by `relspec compile`: run it again"
 
       # +cutoff+: a Cutoff when the plan names the build an early cutoff
@@ -39,10 +39,14 @@ module Relspec
       # The published version a candidate keeps (+keeps+), the sources
       # whose new builds moved it (+because+) and the digest of its debian/
       # once kept with its candidate dependencies (+debian_digest+,
-      # Plan::CutoffCandidate; nil in plans written before it), docs/abi.md.
-      Cutoff = Struct.new(:keeps, :because, :debian_digest, keyword_init: true) do
+      # Plan::CutoffCandidate; nil in plans written before it) and the
+      # version the repository holds of each build of its closure, source =>
+      # Debian version (+against+: what the kept build was made against;
+      # nil or empty in plans written before it: unknown), docs/abi.md.
+      Cutoff = Struct.new(:keeps, :because, :debian_digest, :against, keyword_init: true) do
         def to_h
-          { "keeps" => keeps, "because" => because, "debian_digest" => debian_digest }.compact
+          { "keeps" => keeps, "because" => because, "debian_digest" => debian_digest,
+            "against" => against.nil? || against.empty? ? nil : against }.compact
         end
       end
 
@@ -154,7 +158,19 @@ module Relspec
         digest = data["debian_digest"].nil? ? nil : @fields.text(data, path + ["debian_digest"])
         @fields.fail_at(path + ["debian_digest"], "debian_digest must be 64 lowercase hex digits") \
           unless digest.nil? || digest.match?(/\A[0-9a-f]{64}\z/)
-        Cutoff.new(keeps: keeps, because: because.freeze, debian_digest: digest).freeze
+        Cutoff.new(keeps: keeps, because: because.freeze, debian_digest: digest,
+                   against: against(data, path + ["against"])).freeze
+      end
+
+      # source => the Debian version the repository holds (Cutoff).
+      def against(data, path)
+        @fields.mapping(data, path).to_h do |source, version|
+          @fields.fail_at(path + [source], "invalid source name #{source.inspect}") \
+            unless source.is_a?(String) && DebianName.valid?(source)
+          held = @fields.text(data[path.last], path + [source])
+          @fields.fail_at(path + [source], "invalid Debian version #{version.inspect}") unless Apt::Version.valid?(held)
+          [source.freeze, held.freeze]
+        end.freeze
       end
     end
   end

@@ -31,7 +31,7 @@ module Relspec
       CUTOFF_KEYS = %w[keeps verdict reason evidence].freeze
       CUTOFF_VERDICTS = %w[keep rebuild].freeze
       FILE_KEYS = %w[name sha256 size].freeze
-      INTERFACE_KEYS = %w[against verdict compared changes].freeze
+      INTERFACE_KEYS = %w[against verdict compared changes held].freeze
       INTERFACE_VERDICTS = %w[unchanged changed].freeze
       # The changes a record keeps of a verdict: the first ones say why.
       INTERFACE_CHANGES = 20
@@ -61,8 +61,11 @@ module Relspec
       # the record keeps it: +against+ the version of the build it
       # replaced, +verdict+ "unchanged" or "changed", +compared+ how many
       # installed files were compared, +changes+ the first of what changed
-      # (Evidence#to_s). docs/abi.md, "Early cutoff".
-      Interface = Struct.new(:against, :verdict, :compared, :changes, keyword_init: true) do
+      # (Evidence#to_s), +held+ the version the release's repository holds
+      # when it is another than +against+ (a build made and not published
+      # was compared: no baseline for the early cutoff), else nil.
+      # docs/abi.md, "Early cutoff".
+      Interface = Struct.new(:against, :verdict, :compared, :changes, :held, keyword_init: true) do
         def self.of(verdict)
           new(against: verdict.against, verdict: verdict.unchanged? ? "unchanged" : "changed",
               compared: verdict.evidence.size,
@@ -74,7 +77,7 @@ module Relspec
         end
 
         def to_h
-          { "against" => against, "verdict" => verdict, "compared" => compared, "changes" => changes }
+          { "against" => against, "verdict" => verdict, "compared" => compared, "changes" => changes, "held" => held }.compact
         end
       end
 
@@ -305,8 +308,9 @@ module Relspec
             fail_at(path + ["changes", index], "a change must be text") unless change.is_a?(String)
             change
           end
+          held = data["held"].nil? ? nil : version(data, path + ["held"])
           Interface.new(against: version(data, path + ["against"]), verdict: verdict, compared: compared,
-                        changes: changes.freeze).freeze
+                        changes: changes.freeze, held: held).freeze
         end
 
         def files(fields, path)

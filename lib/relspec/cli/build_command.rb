@@ -101,6 +101,7 @@ module Relspec
         return nil unless interface
 
         text = "interface #{interface.verdict} from #{interface.against}"
+        text += " (unpublished: the repository holds #{interface.held})" if interface.held
         interface.changes.empty? ? text : "#{text}: #{interface.changes.first}"
       end
 

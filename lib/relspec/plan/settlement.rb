@@ -118,7 +118,29 @@ module Relspec
         return nil unless digest_of(before, overlay, package) == recorded
 
         CutoffCandidate.new(keeps: kept, because: published.keys.sort.freeze,
-                            debian_digest: kept_digest(target, decision, package, upstream, decisions, overlay)).freeze
+                            debian_digest: kept_digest(target, decision, package, upstream, decisions, overlay),
+                            against: against(target, @inputs.dependency_names(package, decisions), decisions)).freeze
+      end
+
+      # deb_name => the version the repository holds, of each build of the
+      # closure of +names+ (through the builds' +depends+, as the plan's
+      # build_depends go): what the kept build was made against, so the
+      # early cutoff compares new builds with those and not with a build
+      # made since and not published (docs/abi.md).
+      def against(target, names, decisions)
+        held = {}
+        seen = {}
+        pending = names.dup
+        until pending.empty?
+          dependency = decisions[pending.pop]
+          next unless dependency&.build? && !seen[dependency.package]
+
+          seen[dependency.package] = true
+          version = @versioning.published(target, dependency.deb_name)
+          held[dependency.deb_name] = version.to_s.freeze if version
+          pending.concat(dependency.depends || [])
+        end
+        held.sort.to_h.freeze
       end
 
       # The digest of the candidate's debian/ with each dependency that is

@@ -102,8 +102,10 @@ RSpec.describe "the early cutoff on a published release", order: :defined do
     user_first = @first_user["version"]
     lib = @release.source("base/lib")
     # no dependency of base/user is a candidate: kept, its debian/ is the one planned
+    # and the version the repository holds of base/lib, which its kept build was made against
     expect(entry["cutoff"]).to eq("keeps" => user_first, "because" => [lib],
-                                  "debian_digest" => lock["targets"]["bookworm/amd64"]["base/user"]["debian_digest"])
+                                  "debian_digest" => lock["targets"]["bookworm/amd64"]["base/user"]["debian_digest"],
+                                  "against" => { lib => @first["version"] })
     user = record("base/user")
     expect(user).to include("status" => "kept", "version" => entry["version"])
     expect(user["files"]).to eq(@first_user["files"]) # the kept build's: the next build is compared with them
@@ -182,6 +184,31 @@ RSpec.describe "the early cutoff on a published release", order: :defined do
     expect(record("base/user")).to include("status" => "built")
     expect(record("base/user")["cutoff"]).to include("verdict" => "rebuild", "reason" => "--rebuild-dependents: every candidate is built")
     expect(published["rock-ec-base-user"]).to eq(record("base/user")["version"])
+  end
+
+  # Issue 45: base/lib built at a new version and not published, then
+  # built again: its verdict against the unpublished build says nothing
+  # of the published one base/user's kept build was made against.
+  it "rebuilds the candidate when its dependency was compared with a build the repository does not hold" do
+    lib = @release.source("base/lib")
+    held = published[lib]
+    change("cut.c", "#include \"cut.h\"\nint cut_value(void) { return 47; }\n")
+    run!("compile", "specs/ec.yml", "--out", "out")
+    run!("build", "specs/ec.yml", "--out", "out", "--backend", "host")
+    unpublished = record("base/lib")["version"]
+    expect(record("base/user")).to include("status" => "kept")
+    change("cut.c", "#include \"cut.h\"\nint cut_value(void) { return 48; }\n")
+    build = build_and_publish
+    # the verdict itself says its baseline is not the published build
+    expect(record("base/lib")["interface"]).to include("against" => unpublished, "verdict" => "unchanged", "held" => held)
+    expect(build.stdout).to include("interface unchanged from #{unpublished} (unpublished: the repository holds #{held})")
+    reason = "#{lib}'s new build was compared with #{unpublished}, not with #{held} that the repository holds " \
+             "and the kept build was made against"
+    expect(record("base/user")).to include("status" => "built")
+    expect(record("base/user")["cutoff"]).to include("verdict" => "rebuild", "reason" => reason)
+    expect(record("base/app")["cutoff"]).to include("verdict" => "rebuild", "reason" => reason)
+    expect(build.stdout).to include("early cutoff: rebuilt: #{reason}")
+    expect(published).to include(lib => record("base/lib")["version"], "rock-ec-base-user" => record("base/user")["version"])
   end
 
   # base/app changes itself while base/lib's body change would keep

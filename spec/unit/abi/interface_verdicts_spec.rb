@@ -67,12 +67,30 @@ RSpec.describe Relspec::Abi::InterfaceVerdicts, :tmpdir do
     expect(verdicts["a"]).to be_nil
   end
 
+  # Issue 45: a.1-1 in the target folder was built and not published (the
+  # candidate m names 1-0 the repository holds): the verdict says so.
+  it "names the version the repository holds in a verdict against another build" do
+    candidate = lambda do |held|
+      plan_entry("m", "1-2", needs: ["a"], cutoff: Relspec::Builder::BuildPlan::Cutoff.new(keeps: "1-1", because: ["a"],
+                                                                                           against: { "a" => held }))
+    end
+    # no .deb (a unit test unpacks nothing): the comparison is of no files, what matters is against what
+    FileUtils.mkdir_p(File.join(@dir, "results/a"))
+    File.write(File.join(@dir, "results/a/a_1-1_amd64.buildinfo"), "1-1")
+    previous = { "a" => record("1-1", files: [results::Produced.of(@dir, "results/a/a_1-1_amd64.buildinfo")]) }
+    unpublished = described_class.new(previous, @dir, entries: [entry, candidate.call("1-0")]).decide(entry, [])
+    expect(unpublished.to_h).to include("against" => "1-1", "held" => "1-0")
+    expect(described_class.new(previous, @dir, entries: [entry, candidate.call("1-1")]).decide(entry, []).held).to be_nil
+    expect(described_class.new(previous, @dir, entries: [entry]).decide(entry, []).held).to be_nil
+  end
+
   # lib <- mid <- top: mid and top are candidates (only lib's new version
   # moved mid, only mid's moved top). lib was built at its planned version
   # by an earlier run, whose record holds its verdict.
-  def run_with(lib_verdict, decide: true, refused: nil)
+  def run_with(lib_verdict, decide: true, refused: nil, against: nil)
     lib = plan_entry("lib", "1-2")
-    mid = plan_entry("mid", "1-2", needs: ["lib"], cutoff: Relspec::Builder::BuildPlan::Cutoff.new(keeps: "1-1", because: ["lib"]))
+    mid = plan_entry("mid", "1-2", needs: ["lib"],
+                                   cutoff: Relspec::Builder::BuildPlan::Cutoff.new(keeps: "1-1", because: ["lib"], against: against))
     top = plan_entry("top", "1-2", needs: ["mid"], cutoff: Relspec::Builder::BuildPlan::Cutoff.new(keeps: "1-1", because: ["mid"]))
     interface = results::Interface.new(against: "1-1", verdict: lib_verdict, compared: 2, changes: [])
     previous = { "lib" => results::Record.new(source: "lib", package: "base/lib", version: "1-2", status: "built", files: [],
@@ -91,6 +109,23 @@ RSpec.describe Relspec::Abi::InterfaceVerdicts, :tmpdir do
     expect(verdicts.cutoff("top").to_h).to eq("keeps" => "1-1", "verdict" => "keep",
                                               "reason" => "the interface of mid did not change",
                                               "evidence" => ["lib: 2 files compared with 1-1, unchanged", "mid kept at 1-1"])
+  end
+
+  # Issue 45: lib 1-1 was built and not published (the repository holds
+  # 1-0, which mid's kept build was made against), then lib 1-2 was built
+  # and compared with 1-1: that verdict says nothing of what mid needs.
+  it "rebuilds a candidate whose dependency was compared with another build than the one the repository holds" do
+    unpublished = run_with("unchanged", against: { "lib" => "1-0" })
+    expect(unpublished.cutoff("mid").to_h)
+      .to eq("keeps" => "1-1", "verdict" => "rebuild",
+             "reason" => "lib's new build was compared with 1-1, not with 1-0 that the repository holds " \
+                         "and the kept build was made against")
+    expect(unpublished.cutoff("top").verdict).to eq("rebuild") # mid is built: its interface has no verdict
+    held = run_with("unchanged", against: { "lib" => "1-1" })
+    expect(held.cutoff("mid").to_h).to include("verdict" => "keep", "reason" => "the interface of lib did not change")
+    expect(run_with("unchanged", against: {}).cutoff("mid").verdict).to eq("keep") # a plan written before: unknown
+    # a changed interface against the held build still rebuilds
+    expect(run_with("changed", against: { "lib" => "1-1" }).cutoff("mid").reason).to eq("the interface of lib changed")
   end
 
   # The run decides a candidate before building it (#keep): its closure is

@@ -75,6 +75,30 @@ RSpec.describe Relspec::Builder::BuildPlan do
 /, ""), dir: "out").entries.last.cutoff.debian_digest).to be_nil
   end
 
+  # Issue 45: the versions the repository holds of the candidate's
+  # closure, which its kept build was made against.
+  it "carries what a candidate's kept build was made against, and refuses a damaged one at its line" do
+    candidate = entries.last.to_h.transform_keys(&:to_sym).merge(
+      cutoff: described_class::Cutoff.new(keeps: "2.0-1~bookworm", because: ["rock-r-base-a"],
+                                          against: { "rock-r-base-a" => "1.0-0~bookworm" })
+    )
+    text = written([entries.first, described_class::Entry.new(**candidate)])
+    plan = described_class.parse(text, dir: "out/r/bookworm-amd64")
+    expect(plan.entries.last.cutoff.against).to eq("rock-r-base-a" => "1.0-0~bookworm")
+    expect(plan.entries.last.cutoff.to_h).to include("against" => { "rock-r-base-a" => "1.0-0~bookworm" })
+    line = text.lines.index { |one| one.include?("rock-r-base-a: ") } + 1
+    expect(error_of(text.sub('rock-r-base-a: "1.0-0~bookworm"', 'rock-r-base-a: "1 0"')))
+      .to include("plan.yml:#{line}:", 'invalid Debian version "1 0"')
+    expect(error_of(text.sub('rock-r-base-a: "1.0-0~bookworm"', '"../x": "1.0-0~bookworm"')))
+      .to include("plan.yml:#{line}:", 'invalid source name "../x"')
+    expect(error_of(text.sub(/against:\n *rock-r-base-a: "1.0-0~bookworm"/, "against: [rock-r-base-a]")))
+      .to include("plan.yml:#{line - 1}:", "against must be a mapping")
+    expect(error_of(text.sub('rock-r-base-a: "1.0-0~bookworm"', "rock-r-base-a: [1]")))
+      .to include("plan.yml:#{line}:", "must be text")
+    # a plan written before: unknown, read as empty
+    expect(described_class.parse(text.sub(/ *against:\n.*\n/, ""), dir: "out").entries.last.cutoff.against).to eq({})
+  end
+
   it "gives a build's closure in plan order, dependencies first, each once" do
     make = ->(source, needs) { described_class::Entry.new(package: source, source: source, version: "1", dsc: "x", build_depends: needs) }
     entries = [make.call("z", []), make.call("a", ["z"]), make.call("m", %w[a z]), make.call("top", %w[m a])]

@@ -117,12 +117,16 @@ RSpec.describe Relspec::Builder::BuildResults do
       ["compared: 3", "compared: many"] => [14, "compared must be a number of files"],
       ['changes: ["include/a.h: differs"]', "changes: 4"] => [15, "interface.changes must be a list of changes"],
       ["against: 1.0-1~bookworm", "against: 1 0"] => [12, 'invalid Debian version "1 0"'],
-      ["verdict: changed", "verdit: changed"] => [13, 'unknown key "verdit"']
+      ["verdict: changed", "verdit: changed"] => [13, 'unknown key "verdit"'],
+      ["compared: 3", "compared: 3\n      held: 1 0"] => [15, 'invalid Debian version "1 0"']
     }.each do |(from, to), (line, message)|
       text = with.sub(from, to)
       expect(text).not_to eq(with)
       expect(error_of(text)).to match(/build-results\.yml:#{line}:\d+: error\[build-results\]: .*#{Regexp.escape(message)}/)
     end
+    # compared with a build the repository does not hold (issue 45): the one it holds, named
+    held = parse(with.sub("compared: 3", "compared: 3\n      held: 1.0-0~bookworm"))["rock-demo-base-base-cmake"].interface
+    expect(held.to_h).to eq(interface.to_h.merge("held" => "1.0-0~bookworm"))
   end
 
   it "keeps what the early cutoff decided for a candidate, and refuses another verdict" do

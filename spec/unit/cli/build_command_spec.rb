@@ -51,6 +51,9 @@ RSpec.describe Relspec::CLI::BuildCommand do
                results::Record.new(source: "rock-bb", version: "1-2", status: "built", duration: 3.0, files: [],
                                    interface: interface.call("changed", ["opt/r/include/b.h: differs", "x: added"])),
                results::Record.new(source: "rock-c", version: "1-1", status: "built", duration: 1.0, files: []),
+               results::Record.new(source: "rock-e", version: "1-3", status: "built", duration: 1.0, files: [],
+                                   interface: interface.call("unchanged", []).to_h.transform_keys(&:to_sym)
+                                                       .then { |fields| results::Interface.new(**fields, held: "1-0") }),
                results::Record.new(source: "rock-d", version: "1-2", status: "built", duration: 1.0, files: [],
                                    interface: interface.call("unchanged", []),
                                    cutoff: results::Cutoff.new(keeps: "1-1", verdict: "keep",
@@ -64,6 +67,8 @@ RSpec.describe Relspec::CLI::BuildCommand do
     expect(io.string.lines.drop(1)).to eq(["  rock-a   1-2  built  2.0 s  interface unchanged from 1-1\n",
                                            "  rock-bb  1-2  built  3.0 s  interface changed from 1-1: opt/r/include/b.h: differs\n",
                                            "  rock-c   1-1  built  1.0 s\n",
+                                           "  rock-e   1-3  built  1.0 s  interface unchanged from 1-1 " \
+                                           "(unpublished: the repository holds 1-0)\n",
                                            "  rock-d   1-2  built  1.0 s  early cutoff: keeps 1-1: the interface of rock-a did not change\n"])
   end
 end

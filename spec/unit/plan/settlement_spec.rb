@@ -137,9 +137,31 @@ RSpec.describe Relspec::Plan::Settlement do
       expect([types.kind, types.version.revision]).to eq([:build, 2]) # built as today until the cutoff decides
       # no dependency of base/types is a candidate: kept, its debian/ is the one planned
       expect(types.cutoff.to_h).to eq(keeps: Relspec::Debian::PackageVersion.parse("#{upstream}-1~bookworm"),
-                                      because: ["base/logging"], debian_digest: types.debian_digest)
+                                      because: ["base/logging"], debian_digest: types.debian_digest,
+                                      against: { deb("base/logging") => "#{upstream}-1~bookworm" })
       expect(types.cutoff.to_s).to eq("early cutoff candidate: #{upstream}-1~bookworm stays if the interface of " \
                                       "base/logging does not change")
+    end
+
+    context "with a dependent of the candidate" do
+      let(:graph) { super().merge("base/app" => ["base/types"]) }
+
+      # Issue 45: the versions the candidate's kept build was made against,
+      # which its closure's new builds must be compared with; base/cmake is
+      # inherited, not built here.
+      it "names what the kept build was made against: the published version of each build of the closure" do
+        history, held = published
+        again, = settle(history: history, held: held, overlays: changed(["base/logging"]))
+        app = again.fetch(target).fetch("base/app")
+        expect(%w[base/logging base/types base/app].map { |name| again.fetch(target).fetch(name).version.revision }).to eq([2, 2, 2])
+        expect(app.cutoff.because).to eq(["base/types"])
+        # base/logging through base/types: the published versions, not the ones built now
+        expect(app.cutoff.against).to eq(deb("base/logging") => "#{upstream}-1~bookworm", deb("base/types") => "#{upstream}-1~bookworm")
+        expect(app.cutoff.against).to be_frozen
+        # a build the repository does not hold is no baseline: not named
+        partly, = settle(history: history, held: held.except(deb("base/logging")), overlays: changed(["base/logging"]))
+        expect(partly.fetch(target).fetch("base/app").cutoff.against).to eq(deb("base/types") => "#{upstream}-1~bookworm")
+      end
     end
 
     it "names no candidate when the dependent's own debian/ changed too, or nothing it keeps is published" do
