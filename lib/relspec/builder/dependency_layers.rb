@@ -50,10 +50,11 @@ module Relspec
       # its core ones (its $manual_depends: ccache when builds use it);
       # +budget+: the bound on the kept layers (LayerBudget), nil for none;
       # +room+: [bytes free on the layers' file system, bytes of memory
-      # available or nil when not on tmpfs], either nil when unknown;
+      # available or nil when not on tmpfs], either nil when unknown
+      # (DependencyLayers.bound gives it with the budget; asked only then);
       # +measure+: a layer's size in bytes.
       def initialize(folder, namespace:, archives:, arch:, owner:, depends: [], budget: nil,
-                     room: -> { DependencyLayers.room(folder) }, measure: DependencyLayers.method(:measure))
+                     room: -> { [nil, nil] }, measure: DependencyLayers.method(:measure))
         @folder = folder
         @budget = budget
         @room = room
@@ -84,9 +85,9 @@ module Relspec
       end
 
       # [free bytes, available memory] for layers in +folder+; memory
-      # counts only when the folder is on tmpfs.
-      def self.room(folder, meminfo: "/proc/meminfo")
-        [UnpackDir.free_bytes(folder), tmpfs?(folder) ? UnpackDir.available_memory(meminfo) : nil]
+      # counts only when the folder is on +tmpfs+.
+      def self.room(folder, tmpfs:, meminfo: "/proc/meminfo")
+        [UnpackDir.free_bytes(folder), tmpfs ? UnpackDir.available_memory(meminfo) : nil]
       end
 
       def self.tmpfs?(folder)
@@ -95,13 +96,16 @@ module Relspec
       end
 
       # The folder of a target's layers => the options that bound them
-      # (LayerBudget.bytes of its file system; +override+: the text of
-      # RELSPEC_LAYER_BUDGET, refused here, before any build, when no size).
+      # (LayerBudget.bytes of its file system, and how its room is asked;
+      # whether it is tmpfs is asked once: it does not change in a run;
+      # +override+: the text of RELSPEC_LAYER_BUDGET, refused here, before
+      # any build, when no size).
       def self.bound(override)
         bytes = override && LayerBudget.parse(override)
         lambda do |folder|
-          { budget: LayerBudget.new(budget: LayerBudget.bytes(UnpackDir.size_bytes(folder), tmpfs: tmpfs?(folder),
-                                                                                            override: bytes)) }
+          tmpfs = tmpfs?(folder)
+          { budget: LayerBudget.new(budget: LayerBudget.bytes(UnpackDir.size_bytes(folder), tmpfs: tmpfs, override: bytes)),
+            room: -> { room(folder, tmpfs: tmpfs) } }
         end
       end
 
@@ -203,17 +207,21 @@ module Relspec
       def reserve(log, set, slot)
         return true unless @budget
 
-        @lock.synchronize do
+        evicted = []
+        made = @lock.synchronize do
           free, available = @room.call
           decision = @budget.decide(kept, estimate: @estimate, free: free, available: available)
           if decision.make
-            decision.evict.each { |key| evict(log, key) }
+            evicted = decision.evict.map { |key| evict(log, key) }
             slot[:making] = @estimate
           else
             say(log, "no build-dependency layer #{set.key[0, 16]}: #{decision.reason}")
           end
           decision.make
         end
+        # given up under the lock (no build can take them any more), removed outside it
+        FileUtils.rm_rf(evicted)
+        made
       end
 
       # The layers kept or being made, for LayerBudget.
@@ -226,12 +234,14 @@ module Relspec
         end
       end
 
-      # Gives up +key+'s layer (no build uses it): a later build of its set makes it again.
+      # Gives up +key+'s layer (no build uses it): a later build of its set
+      # makes it again. Its folder, for the caller to remove.
       def evict(log, key)
         slot = @sets.fetch(key)
-        FileUtils.rm_rf(File.dirname(slot[:dir]))
+        folder = File.dirname(slot[:dir])
         say(log, "build-dependency layer #{key[0, 16]} (#{LayerBudget.human(slot[:bytes])}, unused) removed to make room")
         slot[:dir] = slot[:bytes] = nil
+        folder
       end
 
       def note(log, what, set)
