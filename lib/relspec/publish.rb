@@ -197,8 +197,8 @@ module Relspec
       PoolGuard.check(repository, uploads.values.flatten.flat_map(&:items),
                       published: Dir.empty?(dirs.fetch(:db)) ? [] : reprepro.pool_files)
       targets = results.map do |target, read|
-        listed = Dir.empty?(dirs.fetch(:db)) ? [] : reprepro.sources(target.codename)
-        held, fresh = uploads[target].partition { |upload| listed.include?("#{upload.source} #{upload.version}") }
+        listed = Dir.empty?(dirs.fetch(:db)) ? [] : reprepro.packages(target.codename)
+        held, fresh = uploads[target].partition { |upload| listed.include?([upload.source, upload.version, "source"]) }
         fresh.each { |upload| reprepro.includedsc(target.codename, upload.dsc) }
         # Every .deb of the target in one call, held ones too: reprepro skips
         # what it has, and a run interrupted after a source was included but

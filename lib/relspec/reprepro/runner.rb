@@ -38,12 +38,6 @@ module Relspec
         run("remove", codename, *names, options: ["-A", arch])
       end
 
-      # The source packages +codename+ holds, as "source version" lines.
-      def sources(codename)
-        run("list", codename, options: ["--architecture", "source", "--list-format", "${package} ${version}\n"])
-          .lines.map(&:chomp)
-      end
-
       # Every package +codename+ lists, as [name, version, part] ("source"
       # for a source package, else the architecture it is listed under).
       def packages(codename)
